@@ -1,0 +1,69 @@
+// A CPU profile: everything that makes one MELSEC model answer differently from
+// another, as plain data. Profiles are loaded from config/profiles/*.json by
+// config/; this struct is what the rest of the system reads.
+// Facts: ../shared/spec/hardware-behaviour.md §3 (limits), §4 (ports), §5, §6.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "devicemodel/device_table.hpp"
+
+namespace slmp::devicemodel {
+
+enum class Family : std::uint8_t { IQR, QnU, L, QJ71E71, IQF };
+
+// How a port reacts to a request it does not serve.
+struct Refusal {
+    enum class Kind : std::uint8_t { Answer, EndCode, Close, Silence };
+    Kind kind = Kind::Answer;     // Answer: the request is served normally
+    std::uint16_t end_code = 0;   // for EndCode
+};
+
+struct PointLimit {
+    std::uint32_t max = 0;
+    std::uint16_t end_code = 0;
+};
+
+// A special register that publishes one device's configured size (§6).
+struct SizeRegister {
+    Area area;
+    std::uint16_t sd;      // SD number
+    std::uint8_t bits;     // 16 or 32
+};
+
+using DeviceSizes = std::array<std::uint32_t, static_cast<std::size_t>(Area::Count)>;
+
+struct CpuProfile {
+    std::string name;                 // profile id, e.g. "R08CPU"
+    std::string type_name;            // 0101 model name (≤ 16 characters)
+    std::uint16_t model_code = 0;     // 0101 model code
+    Family family = Family::IQR;
+
+    Refusal frame_4e;                 // what a 4E request gets
+    Refusal iqr_subcommands;          // what 0002/0003 (iQ-R form) requests get
+    std::vector<std::uint16_t> unsupported_commands;  // answered with not_supported_code
+    std::uint16_t not_supported_code = 0xC059;
+
+    std::uint16_t out_of_range_code = 0x4031;      // start or span past the device size
+    std::uint16_t not_accessible_code = 0x4030;    // device this command/path may not touch
+    std::uint16_t unknown_device_code = 0xC05B;    // device code the CPU does not know
+    std::uint16_t bad_unit_code = 0xC05C;          // bit units on a word device and the like
+
+    PointLimit batch_words;           // 0401/1401 word units
+    PointLimit batch_bits_binary;     // 0401/1401 bit units, binary code
+    PointLimit batch_bits_ascii;      // 0401/1401 bit units, ASCII code
+    std::uint32_t loopback_max_bytes = 960;
+
+    DeviceSizes sizes{};
+    std::vector<Area> start_only_range_check;   // iQ-R: R and ZR check the start only
+    std::vector<Area> read_only;                // S over built-in Ethernet
+    std::vector<SizeRegister> size_registers;
+    bool zr_ascii_hex = false;        // ASCII frames number ZR in hex (the manuals' form)
+
+    std::uint32_t size(Area area) const { return sizes[static_cast<std::size_t>(area)]; }
+};
+
+}  // namespace slmp::devicemodel

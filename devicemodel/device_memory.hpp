@@ -1,0 +1,59 @@
+// Device memory: native values (bits as bytes, 16-bit words, 32-bit long values)
+// in one store per area, sized from the profile. Byte order and nibble packing
+// exist only in the codec; here a word is a uint16_t.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "devicemodel/cpu_profile.hpp"
+#include "devicemodel/device_table.hpp"
+
+namespace slmp::devicemodel {
+
+class DeviceMemory {
+public:
+    // `slack_words` extra words are kept behind R/ZR so that iQ-R's start-only
+    // range check can read and write past the configured end without touching
+    // another area (hardware-behaviour.md §6: ZR163839 ×64 succeeds).
+    explicit DeviceMemory(const DeviceSizes& sizes, std::uint32_t slack_words = 1024);
+
+    // Number of devices configured for an area (R counts its own size though it
+    // shares ZR's storage).
+    std::uint32_t size(Area area) const { return sizes_[static_cast<std::size_t>(area)]; }
+
+    // Bit-unit access; `spec` must be a bit device (plain, contact or coil).
+    bool bit(const DeviceSpec& spec, std::uint32_t number) const;
+    void set_bit(const DeviceSpec& spec, std::uint32_t number, bool on);
+
+    // Word-unit access, the view that 0401/1401 word units give:
+    //  bit device   -> word i holds devices start+16i .. start+16i+15 (bit 0 lowest);
+    //  word device  -> word i is device start+i;
+    //  double word  -> words_per_device() words per device: value low, value high
+    //                  (LTN/LSTN then a status word b0 coil b1 contact, and a system word).
+    void read_words(const DeviceSpec& spec, std::uint32_t start, std::span<std::uint16_t> out) const;
+    void write_words(const DeviceSpec& spec, std::uint32_t start, std::span<const std::uint16_t> in);
+
+    // Single values by device number, for configuration and special registers.
+    std::uint32_t value(const DeviceSpec& spec, std::uint32_t number) const;
+    void set_value(const DeviceSpec& spec, std::uint32_t number, std::uint32_t value);
+
+    // Whether devices [start, start + count) exist (count in devices, not words).
+    bool contains(Area area, std::uint64_t start, std::uint64_t count) const;
+
+private:
+    struct Store {
+        std::vector<std::uint8_t> bits;      // plain bit areas; contacts of T/C areas
+        std::vector<std::uint8_t> coils;     // T/C areas only
+        std::vector<std::uint32_t> values;   // word areas (low 16 bits), LZ, T/C current values
+    };
+    Store& store(Area area);
+    const Store& store(Area area) const;
+    static Area storage_area(Area area) { return area == Area::R ? Area::ZR : area; }
+
+    DeviceSizes sizes_;
+    std::vector<Store> stores_;
+};
+
+}  // namespace slmp::devicemodel

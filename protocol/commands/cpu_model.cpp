@@ -1,0 +1,20 @@
+// Read Type Name 0101 — slmp-labels-remote-misc.md §5.7, hardware-behaviour.md §5.
+// The model name is 16 characters padded with spaces, sent as raw characters in
+// both codecs; the model code is a word.
+#include <string>
+
+#include "protocol/commands/handlers.hpp"
+
+namespace slmp::protocol::commands {
+
+EndCode read_type_name(CommandContext& ctx) {
+    if (!ctx.in.finish()) return ctx.in.error();
+    const auto& profile = ctx.cpu.profile();
+    std::string name = profile.type_name;
+    name.resize(16, ' ');
+    ctx.out.raw(std::span(reinterpret_cast<const std::uint8_t*>(name.data()), name.size()));
+    ctx.out.u16(profile.model_code);
+    return EndCode::Ok;
+}
+
+}  // namespace slmp::protocol::commands

@@ -1,0 +1,100 @@
+// FieldReader / FieldWriter: the only code that knows binary from ASCII.
+// A command handler is written once against these; it never asks which codec
+// it has. Rules: ../shared/spec/slmp-frames-and-devices.md §3.3, §5.3–§5.7.
+//
+// FieldReader has a sticky error: the first bad or missing field records an end
+// code and a field name, later reads return zeros. A handler decodes every
+// field, calls finish() once, and only then touches device memory — so a
+// rejected request never changes anything.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "devicemodel/device_table.hpp"
+#include "protocol/end_code.hpp"
+#include "protocol/frame.hpp"
+
+namespace slmp::protocol {
+
+// Device specification forms. Q: subcommands 0000/0001 (binary code 1 byte,
+// number 3 bytes; ASCII code 2 characters, number 6 digits). IQR: 0002/0003
+// (2 bytes / 4 bytes; 4 characters / 8 digits).
+enum class DeviceForm : std::uint8_t { Q, IQR };
+
+// Codec choices that depend on the CPU rather than the frame.
+struct CodecOptions {
+    bool zr_ascii_hex = false;   // number ZR in hex in ASCII frames (the manuals' form)
+};
+
+// A device as it arrived: `spec` is null when the code is not in the device table.
+struct DeviceField {
+    const devicemodel::DeviceSpec* spec = nullptr;
+    std::uint32_t number = 0;
+    std::uint16_t code = 0;   // the binary code, or 0 for ASCII
+};
+
+class FieldReader {
+public:
+    FieldReader(Codec codec, std::span<const std::uint8_t> data, CodecOptions options = {});
+
+    Codec codec() const { return codec_; }
+    std::uint8_t u8(std::string_view what);
+    std::uint16_t u16(std::string_view what);
+    std::uint32_t u32(std::string_view what);
+    DeviceField device(DeviceForm form, std::string_view what);
+    // Bit-unit data: one nibble a point (first point high) or one '0'/'1' a point.
+    std::vector<std::uint8_t> bits(std::size_t count, std::string_view what);
+    std::vector<std::uint16_t> words(std::size_t count, std::string_view what);
+    // Bytes carried as they are in both codecs (loopback data, model names).
+    std::span<const std::uint8_t> raw(std::size_t count, std::string_view what);
+
+    // Fails with C061 when bytes are left over. Returns ok().
+    bool finish();
+    bool ok() const { return error_ == EndCode::Ok; }
+    EndCode error() const { return error_; }
+    std::string_view error_field() const { return error_field_; }
+    std::size_t remaining() const { return data_.size() - pos_; }
+
+private:
+    std::span<const std::uint8_t> take(std::size_t count, std::string_view what);
+    std::uint32_t number(std::size_t bytes, std::string_view what);
+    void fail(EndCode code, std::string_view what);
+
+    Codec codec_;
+    std::span<const std::uint8_t> data_;
+    CodecOptions options_;
+    std::size_t pos_ = 0;
+    EndCode error_ = EndCode::Ok;
+    std::string_view error_field_;
+};
+
+class FieldWriter {
+public:
+    explicit FieldWriter(Codec codec, CodecOptions options = {}) : codec_(codec), options_(options) {}
+
+    Codec codec() const { return codec_; }
+    void u8(std::uint8_t value) { number(value, 1); }
+    void u16(std::uint16_t value) { number(value, 2); }
+    void u32(std::uint32_t value) { number(value, 4); }
+    void device(DeviceForm form, const devicemodel::DeviceAddress& address);
+    void bits(std::span<const std::uint8_t> points);
+    void words(std::span<const std::uint16_t> values);
+    void raw(std::span<const std::uint8_t> bytes);
+
+    std::vector<std::uint8_t>& bytes() { return out_; }
+
+private:
+    void number(std::uint32_t value, std::size_t bytes);
+
+    Codec codec_;
+    CodecOptions options_;
+    std::vector<std::uint8_t> out_;
+};
+
+// How many decimal/hex digits an ASCII device number has in this form.
+constexpr std::size_t ascii_number_digits(DeviceForm form) { return form == DeviceForm::Q ? 6 : 8; }
+
+}  // namespace slmp::protocol

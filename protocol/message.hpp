@@ -1,0 +1,17 @@
+// Wrapping a payload in a 3E/4E header, for responses (server) and requests
+// (client). The payload is already encoded by a FieldWriter; the length field
+// is its size, so it is always right (the "patch the length at the end" idea).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "protocol/frame.hpp"
+
+namespace slmp::protocol {
+
+std::vector<std::uint8_t> encode_frame(Direction direction, FrameKind kind, Codec codec, std::uint16_t serial,
+                                       const Route& route, std::span<const std::uint8_t> payload);
+
+}  // namespace slmp::protocol
