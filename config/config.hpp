@@ -32,6 +32,9 @@ devicemodel::CpuProfile parse_profile(const std::string& json_text, const std::s
 enum class DataCode : std::uint8_t { Binary, Ascii, Auto };
 enum class Transport : std::uint8_t { Tcp, Udp };
 
+// "binary", "ascii" or "auto"; `where` names the option or key in the error.
+DataCode parse_data_code(const std::string& text, const std::string& where);
+
 struct PortConfig {
     Transport transport = Transport::Tcp;
     std::uint16_t port = 5000;             // 0: any free port (see ready_file)

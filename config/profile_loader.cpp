@@ -1,0 +1,150 @@
+// CPU profiles: JSON (config/profiles/*.json, embedded at build time) into
+// devicemodel::CpuProfile. The keys are documented in docs/configuration.md.
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+#include "config/builtin_profiles.hpp"
+#include "config/config.hpp"
+#include "config/json_path.hpp"
+
+namespace slmp::config {
+
+using devicemodel::Area;
+using devicemodel::CpuProfile;
+using devicemodel::Family;
+using devicemodel::Refusal;
+
+namespace {
+
+std::string upper(std::string text) {
+    for (auto& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return text;
+}
+
+Area area(const JsonAt& at) {
+    auto name = at.string();
+    auto found = devicemodel::area_by_name(name);
+    if (!found) at.fail("unknown device '" + name + "'", "use a device area such as X, M, D, T, ZR, LZ");
+    return *found;
+}
+
+// "answer", "silence", "close", or a 4-digit end code such as "C059".
+Refusal refusal(const JsonAt& at) {
+    auto text = at.string();
+    if (text == "answer") return {Refusal::Kind::Answer, 0};
+    if (text == "silence") return {Refusal::Kind::Silence, 0};
+    if (text == "close") return {Refusal::Kind::Close, 0};
+    if (text.size() != 4) at.fail("'" + text + "' is not a port reaction", "use answer, silence, close or an end code like \"C059\"");
+    return {Refusal::Kind::EndCode, at.hex_code()};
+}
+
+Family family(const JsonAt& at) {
+    auto text = at.string();
+    if (text == "iQ-R") return Family::IQR;
+    if (text == "QnU") return Family::QnU;
+    if (text == "L") return Family::L;
+    if (text == "QJ71E71") return Family::QJ71E71;
+    if (text == "iQ-F") return Family::IQF;
+    at.fail("unknown family '" + text + "'", "use iQ-R, QnU, L, QJ71E71 or iQ-F");
+}
+
+devicemodel::PointLimit limit(const JsonAt& at) {
+    at.only_keys({"max", "end_code"});
+    return {static_cast<std::uint32_t>(at["max"].unsigned_int(65535)), at["end_code"].hex_code()};
+}
+
+std::vector<Area> areas(const JsonAt& at) {
+    at.expect_array();
+    std::vector<Area> list;
+    for (std::size_t i = 0; i < at.json().size(); ++i) list.push_back(area(at[i]));
+    return list;
+}
+
+}  // namespace
+
+CpuProfile parse_profile(const std::string& json_text, const std::string& source) {
+    auto json = parse_json(json_text, source);
+    JsonAt root(json, source);
+    root.only_keys({"name", "description", "type_name", "model_code", "family", "frame_4e", "iqr_subcommands",
+                    "unsupported_commands", "end_codes", "limits", "device_sizes", "start_only_range_check",
+                    "read_only_devices", "size_registers", "zr_ascii_hex"});
+    CpuProfile p;
+    p.name = root["name"].string();
+    p.type_name = root["type_name"].string();
+    if (p.type_name.size() > 16) root["type_name"].fail("longer than 16 characters", "shorten it (0101 sends 16)");
+    p.model_code = root["model_code"].hex_code();
+    p.family = family(root["family"]);
+    p.frame_4e = refusal(root["frame_4e"]);
+    p.iqr_subcommands = refusal(root["iqr_subcommands"]);
+    auto unsupported = root["unsupported_commands"];
+    unsupported.expect_array();
+    for (std::size_t i = 0; i < unsupported.json().size(); ++i) p.unsupported_commands.push_back(unsupported[i].hex_code());
+
+    auto codes = root["end_codes"];
+    codes.only_keys({"not_supported", "out_of_range", "not_accessible", "unknown_device", "bad_unit"});
+    p.not_supported_code = codes["not_supported"].hex_code();
+    p.out_of_range_code = codes["out_of_range"].hex_code();
+    p.not_accessible_code = codes["not_accessible"].hex_code();
+    p.unknown_device_code = codes["unknown_device"].hex_code();
+    p.bad_unit_code = codes["bad_unit"].hex_code();
+
+    auto limits = root["limits"];
+    limits.only_keys({"batch_words", "batch_bits_binary", "batch_bits_ascii", "loopback_bytes"});
+    p.batch_words = limit(limits["batch_words"]);
+    p.batch_bits_binary = limit(limits["batch_bits_binary"]);
+    p.batch_bits_ascii = limit(limits["batch_bits_ascii"]);
+    p.loopback_max_bytes = static_cast<std::uint32_t>(limits["loopback_bytes"].unsigned_int(65535));
+
+    auto sizes = root["device_sizes"];
+    sizes.expect_object();
+    for (const auto& [name, _] : sizes.json().items()) {
+        auto at = sizes[name];
+        auto a = devicemodel::area_by_name(name);
+        if (!a) at.fail("unknown device '" + name + "'", "use a device area such as X, M, D, T, ZR, LZ");
+        p.sizes[static_cast<std::size_t>(*a)] = static_cast<std::uint32_t>(at.unsigned_int(0x7FFFFFFF));
+    }
+    p.start_only_range_check = areas(root["start_only_range_check"]);
+    p.read_only = areas(root["read_only_devices"]);
+    auto regs = root["size_registers"];
+    regs.expect_array();
+    for (std::size_t i = 0; i < regs.json().size(); ++i) {
+        auto reg = regs[i];
+        reg.only_keys({"device", "sd", "bits"});
+        auto bits = reg["bits"].unsigned_int(32);
+        if (bits != 16 && bits != 32) reg["bits"].fail("must be 16 or 32", "write 16 or 32");
+        auto sd = static_cast<std::uint16_t>(reg["sd"].unsigned_int(0xFFFF));
+        if (sd + (bits == 32 ? 1u : 0u) >= p.size(Area::SD))
+            reg["sd"].fail("SD" + std::to_string(sd) + " is outside the SD size", "raise device_sizes.SD or fix the number");
+        p.size_registers.push_back({area(reg["device"]), sd, static_cast<std::uint8_t>(bits)});
+    }
+    p.zr_ascii_hex = root["zr_ascii_hex"].boolean();
+    return p;
+}
+
+std::vector<std::string> builtin_profile_names() {
+    std::vector<std::string> names;
+    for (const auto& p : builtin_profiles()) names.emplace_back(p.name);
+    return names;
+}
+
+CpuProfile load_profile(const std::string& name_or_path) {
+    bool is_path = name_or_path.find('/') != std::string::npos ||
+                   (name_or_path.size() > 5 && name_or_path.ends_with(".json"));
+    if (is_path) {
+        std::ifstream file(name_or_path);
+        if (!file) throw ConfigError(name_or_path + ": cannot open the profile file; check the path");
+        std::stringstream text;
+        text << file.rdbuf();
+        return parse_profile(text.str(), name_or_path);
+    }
+    for (const auto& p : builtin_profiles())
+        if (upper(std::string(p.name)) == upper(name_or_path))
+            return parse_profile(std::string(p.json), "profile " + std::string(p.name));
+    std::string list;
+    for (const auto& n : builtin_profile_names()) list += (list.empty() ? "" : ", ") + n;
+    throw ConfigError("unknown profile '" + name_or_path + "'; use one of: " + list + " (or a path to a profile .json file)");
+}
+
+}  // namespace slmp::config

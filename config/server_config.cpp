@@ -1,0 +1,138 @@
+// The server configuration file. Keys and defaults: docs/configuration.md.
+#include <fstream>
+#include <sstream>
+
+#include "config/config.hpp"
+#include "config/json_path.hpp"
+
+namespace slmp::config {
+
+using devicemodel::Area;
+using devicemodel::Unit;
+
+namespace {
+
+PortConfig port(const JsonAt& at) {
+    at.only_keys({"transport", "port", "data_code", "max_connections", "idle_timeout_ms"});
+    PortConfig p;
+    auto transport = at["transport"].string();
+    if (transport == "tcp") p.transport = Transport::Tcp;
+    else if (transport == "udp") p.transport = Transport::Udp;
+    else at["transport"].fail("unknown transport '" + transport + "'", "use \"tcp\" or \"udp\"");
+    p.port = static_cast<std::uint16_t>(at["port"].unsigned_int(65535));
+    if (at.has("data_code")) p.data_code = parse_data_code(at["data_code"].string(), at["data_code"].pointer());
+    if (at.has("max_connections")) {
+        p.max_connections = static_cast<unsigned>(at["max_connections"].unsigned_int(4096));
+        if (p.max_connections == 0) at["max_connections"].fail("must be at least 1", "use 1 to reproduce an iQ-R built-in port");
+    }
+    if (at.has("idle_timeout_ms")) p.idle_timeout_ms = static_cast<unsigned>(at["idle_timeout_ms"].unsigned_int(86400000));
+    return p;
+}
+
+// One device's initial values: a number, a list of numbers (consecutive
+// devices), or for word devices a string packed two characters a word, low
+// byte first (as the manual stores "12AB" in D2-D3).
+InitialValue initial_value(const std::string& address_text, const JsonAt& at) {
+    std::string error;
+    auto address = devicemodel::parse_address(address_text, &error);
+    if (!address) at.fail(error, "write an address such as D100, M0, X1F, ZR1000");
+    InitialValue v{*address, {}};
+    const auto& j = at.json();
+    auto number = [&](const JsonAt& item) -> std::uint32_t {
+        if (item.json().is_boolean()) return item.json().get<bool>() ? 1 : 0;
+        if (item.json().is_number_integer() && item.json().get<std::int64_t>() < 0) {
+            auto s = item.json().get<std::int64_t>();
+            if (s < -2147483648LL) item.fail("value too small", "use a 32-bit value");
+            return static_cast<std::uint32_t>(s);   // two's complement, as a PLC stores it
+        }
+        return static_cast<std::uint32_t>(item.unsigned_int(0xFFFFFFFF));
+    };
+    if (j.is_array()) {
+        for (std::size_t i = 0; i < j.size(); ++i) v.values.push_back(number(at[i]));
+    } else if (j.is_string()) {
+        if (address->spec->unit != Unit::Word) at.fail("a string needs a word device", "use e.g. D100");
+        auto text = j.get<std::string>();
+        for (std::size_t i = 0; i < text.size(); i += 2) {
+            std::uint32_t low = static_cast<unsigned char>(text[i]);
+            std::uint32_t high = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0;
+            v.values.push_back(low | high << 8);
+        }
+    } else {
+        v.values.push_back(number(at));
+    }
+    return v;
+}
+
+}  // namespace
+
+DataCode parse_data_code(const std::string& text, const std::string& where) {
+    if (text == "binary") return DataCode::Binary;
+    if (text == "ascii") return DataCode::Ascii;
+    if (text == "auto") return DataCode::Auto;
+    throw ConfigError(where + ": unknown data code '" + text + "'; use binary, ascii or auto");
+}
+
+ServerConfig parse_server_config(const std::string& json_text, const std::string& source) {
+    auto json = parse_json(json_text, source);
+    JsonAt root(json, source);
+    root.only_keys({"profile", "bind", "ports", "max_request_bytes", "device_sizes", "devices", "log_level"});
+    ServerConfig c;
+    if (root.has("profile")) c.profile = root["profile"].string();
+    if (root.has("bind")) c.bind = root["bind"].string();
+    if (root.has("ports")) {
+        auto ports = root["ports"];
+        ports.expect_array();
+        c.ports.clear();
+        for (std::size_t i = 0; i < ports.json().size(); ++i) c.ports.push_back(port(ports[i]));
+    }
+    if (root.has("max_request_bytes")) {
+        c.max_request_bytes = root["max_request_bytes"].unsigned_int(1 << 20);
+        if (c.max_request_bytes < 64) root["max_request_bytes"].fail("too small", "use at least 64 (default 8192)");
+    }
+    if (root.has("device_sizes")) {
+        auto sizes = root["device_sizes"];
+        sizes.expect_object();
+        for (const auto& [name, _] : sizes.json().items()) {
+            auto a = devicemodel::area_by_name(name);
+            if (!a) sizes[name].fail("unknown device '" + name + "'", "use a device area such as X, M, D, T, ZR, LZ");
+            c.device_sizes.emplace_back(*a, static_cast<std::uint32_t>(sizes[name].unsigned_int(0x7FFFFFFF)));
+        }
+    }
+    if (root.has("devices")) {
+        auto devices = root["devices"];
+        devices.expect_object();
+        for (const auto& [address, _] : devices.json().items()) c.devices.push_back(initial_value(address, devices[address]));
+    }
+    if (root.has("log_level")) c.log_level = root["log_level"].string();
+    return c;
+}
+
+ServerConfig load_server_config(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) throw ConfigError(file.string() + ": cannot open the configuration file; check the path given to --config");
+    std::stringstream text;
+    text << in.rdbuf();
+    return parse_server_config(text.str(), file.string());
+}
+
+devicemodel::CpuProfile resolve_profile(const ServerConfig& config) {
+    auto profile = load_profile(config.profile);
+    for (const auto& [area, points] : config.device_sizes) profile.sizes[static_cast<std::size_t>(area)] = points;
+    return profile;
+}
+
+void apply_initial_values(devicemodel::Cpu& cpu, const ServerConfig& config) {
+    for (const auto& v : config.devices) {
+        const auto& spec = *v.address.spec;
+        if (!cpu.memory().contains(spec.area, v.address.number, v.values.size()))
+            throw ConfigError("devices: " + devicemodel::format_address(v.address) + " with " +
+                              std::to_string(v.values.size()) + " value(s) runs past the " +
+                              std::string(devicemodel::area_name(spec.area)) + " size of " +
+                              std::to_string(cpu.memory().size(spec.area)) + " in profile " + cpu.profile().name +
+                              "; shorten the list or raise device_sizes");
+        for (std::size_t i = 0; i < v.values.size(); ++i)
+            cpu.memory().set_value(spec, v.address.number + static_cast<std::uint32_t>(i), v.values[i]);
+    }
+}
+
+}  // namespace slmp::config

@@ -1,0 +1,107 @@
+#include "server/options.hpp"
+
+#include <iostream>
+#include <vector>
+
+#include <boost/program_options.hpp>
+
+namespace slmp::server {
+
+namespace po = boost::program_options;
+using config::ConfigError;
+using config::PortConfig;
+using config::Transport;
+
+namespace {
+
+constexpr const char* kVersion = "slmp-sim 0.1.0";
+
+// Replaces the configured ports of one transport with the ones given on the
+// command line; the other transport keeps its ports.
+void replace_ports(config::ServerConfig& c, Transport transport, const std::vector<unsigned>& ports,
+                   const char* option) {
+    std::erase_if(c.ports, [&](const PortConfig& p) { return p.transport == transport; });
+    for (auto port : ports) {
+        if (port > 65535) throw ConfigError(std::string("--") + option + " " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
+        c.ports.push_back(PortConfig{transport, static_cast<std::uint16_t>(port)});
+    }
+}
+
+}  // namespace
+
+CommandLine parse_command_line(int argc, char** argv) {
+    po::options_description options("Options");
+    options.add_options()
+        ("help,h", "print this help and exit")
+        ("version", "print the version and exit")
+        ("list-profiles", "list the built-in CPU profiles and exit")
+        ("profile,p", po::value<std::string>(), "CPU profile: a built-in name (default R08CPU) or a profile .json file")
+        ("config,c", po::value<std::string>(), "JSON configuration file (see docs/configuration.md)")
+        ("tcp-port", po::value<std::vector<unsigned>>()->multitoken(), "TCP port(s) to serve; 0 = any free port (default 5000)")
+        ("udp-port", po::value<std::vector<unsigned>>()->multitoken(), "UDP port(s) to serve; 0 = any free port (default 5000)")
+        ("bind,b", po::value<std::string>(), "address to listen on (default 0.0.0.0)")
+        ("data-code", po::value<std::string>(), "binary, ascii or auto (detect per message; default)")
+        ("max-connections", po::value<unsigned>(), "TCP clients served at once per port (default 64; 1 = iQ-R built-in port)")
+        ("idle-timeout", po::value<double>(), "close a TCP connection silent for this many seconds (default 300; 0 = never)")
+        ("max-request-bytes", po::value<std::size_t>(), "largest request frame accepted (default 8192)")
+        ("log-level,l", po::value<std::string>(), "trace, debug, info, warn, error or off (default info)")
+        ("ready-file", po::value<std::string>(), "write {\"tcp\":[...],\"udp\":[...],\"pid\":N} here once listening");
+
+    po::variables_map vm;
+    try {
+        po::store(po::command_line_parser(argc, argv).options(options).run(), vm);
+        po::notify(vm);
+    } catch (const po::error& e) {
+        throw ConfigError(std::string(e.what()) + "; see slmp-sim --help");
+    }
+
+    CommandLine cl;
+    if (vm.count("help")) {
+        std::cout << "slmp-sim — a MELSEC CPU that answers SLMP (3E/4E, binary/ASCII) over TCP and UDP\n\n"
+                  << "Usage: slmp-sim [options]\n\n" << options << "\n";
+        cl.exit_now = true;
+        return cl;
+    }
+    if (vm.count("version")) {
+        std::cout << kVersion << "\n";
+        cl.exit_now = true;
+        return cl;
+    }
+    if (vm.count("list-profiles")) {
+        for (const auto& name : config::builtin_profile_names()) std::cout << name << "\n";
+        cl.exit_now = true;
+        return cl;
+    }
+
+    auto& c = cl.config;
+    if (vm.count("config")) c = config::load_server_config(vm["config"].as<std::string>());
+    if (vm.count("profile")) c.profile = vm["profile"].as<std::string>();
+    if (vm.count("bind")) c.bind = vm["bind"].as<std::string>();
+    if (vm.count("tcp-port")) replace_ports(c, Transport::Tcp, vm["tcp-port"].as<std::vector<unsigned>>(), "tcp-port");
+    if (vm.count("udp-port")) replace_ports(c, Transport::Udp, vm["udp-port"].as<std::vector<unsigned>>(), "udp-port");
+    if (vm.count("data-code")) {
+        auto code = config::parse_data_code(vm["data-code"].as<std::string>(), "--data-code");
+        for (auto& p : c.ports) p.data_code = code;
+    }
+    if (vm.count("max-connections")) {
+        auto n = vm["max-connections"].as<unsigned>();
+        if (n == 0) throw ConfigError("--max-connections 0: must be at least 1; use 1 to reproduce an iQ-R built-in port");
+        for (auto& p : c.ports) p.max_connections = n;
+    }
+    if (vm.count("idle-timeout")) {
+        auto seconds = vm["idle-timeout"].as<double>();
+        if (seconds < 0 || seconds > 86400) throw ConfigError("--idle-timeout: use 0 (never) to 86400 seconds");
+        for (auto& p : c.ports) p.idle_timeout_ms = static_cast<unsigned>(seconds * 1000);
+    }
+    if (vm.count("max-request-bytes")) {
+        c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();
+        if (c.max_request_bytes < 64 || c.max_request_bytes > (1u << 20))
+            throw ConfigError("--max-request-bytes: use 64 to 1048576 (default 8192)");
+    }
+    if (vm.count("log-level")) c.log_level = vm["log-level"].as<std::string>();
+    if (vm.count("ready-file")) c.ready_file = vm["ready-file"].as<std::string>();
+    if (c.ports.empty()) throw ConfigError("no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
+    return cl;
+}
+
+}  // namespace slmp::server

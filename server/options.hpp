@@ -1,0 +1,21 @@
+// The command line: Boost.Program_options on top of the JSON configuration
+// file. Precedence: built-in defaults < --config file < command-line options.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "config/config.hpp"
+
+namespace slmp::server {
+
+struct CommandLine {
+    config::ServerConfig config;
+    bool exit_now = false;      // --help, --version, --list-profiles: printed already
+};
+
+// Parses argv. Throws config::ConfigError with a one-line message that names
+// the option and the fix.
+CommandLine parse_command_line(int argc, char** argv);
+
+}  // namespace slmp::server

@@ -1,0 +1,74 @@
+#include "server/tcp_listener.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace slmp::server {
+
+namespace asio = boost::asio;
+using asio::ip::tcp;
+
+TcpListener::TcpListener(asio::io_context& io, Core& core, const config::PortConfig& port,
+                         const asio::ip::address& bind)
+    : io_(io), core_(core), config_(port), endpoint_(bind, port.port), acceptor_(io) {
+    listen();   // throws boost::system::system_error when the port cannot be had
+    endpoint_ = acceptor_.local_endpoint();
+}
+
+void TcpListener::listen() {
+    acceptor_.open(endpoint_.protocol());
+    acceptor_.set_option(tcp::acceptor::reuse_address(true));
+    acceptor_.bind(endpoint_);
+    acceptor_.listen();
+    asio::co_spawn(io_, accept_loop(), [this](std::exception_ptr e) {
+        if (!e) return;
+        try {
+            std::rethrow_exception(e);
+        } catch (const std::exception& ex) {
+            spdlog::error("TCP port {}: accept loop failed: {}", port(), ex.what());
+        }
+    });
+}
+
+asio::awaitable<void> TcpListener::accept_loop() {
+    while (acceptor_.is_open()) {
+        boost::system::error_code ec;
+        auto socket = co_await acceptor_.async_accept(asio::redirect_error(asio::use_awaitable, ec));
+        if (ec) {
+            if (ec == asio::error::operation_aborted || !acceptor_.is_open()) co_return;
+            spdlog::warn("TCP port {}: accept failed: {}", port(), ec.message());
+            continue;
+        }
+        auto session = std::make_shared<TcpSession>(std::move(socket), core_, config_,
+                                                    [this](TcpSession* s) { session_closed(s); });
+        sessions_.emplace(session.get(), session);
+        session->start();
+        if (sessions_.size() >= config_.max_connections) {
+            spdlog::info("TCP port {}: {} of {} connection(s) in use; refusing new clients until one leaves", port(),
+                         sessions_.size(), config_.max_connections);
+            acceptor_.close(ec);
+            co_return;
+        }
+    }
+}
+
+void TcpListener::session_closed(TcpSession* session) {
+    sessions_.erase(session);
+    if (stopping_ || acceptor_.is_open()) return;
+    try {
+        listen();
+        spdlog::info("TCP port {}: accepting clients again", port());
+    } catch (const std::exception& e) {
+        spdlog::error("TCP port {}: cannot listen again: {}", port(), e.what());
+    }
+}
+
+void TcpListener::stop() {
+    stopping_ = true;
+    boost::system::error_code ec;
+    acceptor_.close(ec);
+    // Sessions remove themselves from the map as they finish; copy first.
+    auto sessions = sessions_;
+    for (auto& [_, session] : sessions) session->close();
+}
+
+}  // namespace slmp::server

@@ -1,0 +1,40 @@
+// A TCP port. When it serves max_connections clients it closes its listening
+// socket, so further clients are refused as by a real iQ-R built-in port
+// (hardware-behaviour.md §4); it listens again when a client leaves.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+
+#include "server/asio.hpp"
+
+#include "config/config.hpp"
+#include "server/core.hpp"
+#include "server/tcp_session.hpp"
+
+namespace slmp::server {
+
+class TcpListener {
+public:
+    TcpListener(boost::asio::io_context& io, Core& core, const config::PortConfig& port,
+                const boost::asio::ip::address& bind);
+
+    std::uint16_t port() const { return endpoint_.port(); }   // the bound port, also when 0 was asked for
+    void stop();
+
+private:
+    void listen();
+    boost::asio::awaitable<void> accept_loop();
+    void session_closed(TcpSession* session);
+
+    boost::asio::io_context& io_;
+    Core& core_;
+    config::PortConfig config_;
+    boost::asio::ip::tcp::endpoint endpoint_;
+    boost::asio::ip::tcp::acceptor acceptor_;
+    std::unordered_map<TcpSession*, std::shared_ptr<TcpSession>> sessions_;
+    bool stopping_ = false;
+};
+
+}  // namespace slmp::server

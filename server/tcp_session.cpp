@@ -1,0 +1,128 @@
+#include "server/tcp_session.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace slmp::server {
+
+namespace asio = boost::asio;
+using asio::awaitable;
+using asio::use_awaitable;
+using protocol::Outcome;
+
+protocol::DataCodePolicy to_policy(config::DataCode code) {
+    switch (code) {
+        case config::DataCode::Binary: return protocol::DataCodePolicy::Binary;
+        case config::DataCode::Ascii: return protocol::DataCodePolicy::Ascii;
+        case config::DataCode::Auto: break;
+    }
+    return protocol::DataCodePolicy::Auto;
+}
+
+TcpSession::TcpSession(asio::ip::tcp::socket socket, Core& core, const config::PortConfig& port,
+                       std::function<void(TcpSession*)> on_closed)
+    : socket_(std::move(socket)),
+      core_(core),
+      policy_(to_policy(port.data_code)),
+      idle_timeout_(port.idle_timeout_ms),
+      idle_timer_(socket_.get_executor()),
+      on_closed_(std::move(on_closed)) {
+    session_.id = core_.next_session_id++;
+    boost::system::error_code ec;
+    auto remote = socket_.remote_endpoint(ec);
+    peer_ = ec ? "tcp:?" : "tcp:" + remote.address().to_string() + ":" + std::to_string(remote.port());
+    socket_.set_option(asio::ip::tcp::no_delay(true), ec);
+}
+
+void TcpSession::start() {
+    spdlog::info("{} connected (connection {})", peer_, session_.id);
+    last_activity_ = std::chrono::steady_clock::now();
+    auto self = shared_from_this();
+    auto log_crash = [self](std::exception_ptr e) {
+        if (!e) return;
+        try {
+            std::rethrow_exception(e);
+        } catch (const std::exception& ex) {
+            spdlog::error("{} session failed: {}", self->peer_, ex.what());
+            self->finish("internal error");
+        }
+    };
+    asio::co_spawn(socket_.get_executor(), serve(), log_crash);
+    if (idle_timeout_.count() > 0) asio::co_spawn(socket_.get_executor(), watch_idle(), log_crash);
+}
+
+void TcpSession::close() {
+    boost::system::error_code ec;
+    socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
+    socket_.close(ec);
+    idle_timer_.cancel();
+}
+
+void TcpSession::finish(const std::string& why) {
+    if (closed_) return;
+    closed_ = true;
+    close();
+    spdlog::info("{} disconnected (connection {}): {}", peer_, session_.id, why);
+    on_closed_(this);
+}
+
+awaitable<void> TcpSession::serve() {
+    auto self = shared_from_this();   // keeps the session alive while it serves
+    std::vector<std::uint8_t> pending;   // bytes received but not yet a whole frame
+    std::vector<std::uint8_t> replies;
+    std::array<std::uint8_t, 8192> chunk;
+    for (;;) {
+        boost::system::error_code ec;
+        auto n = co_await socket_.async_read_some(asio::buffer(chunk), asio::redirect_error(use_awaitable, ec));
+        if (ec) {
+            if (ec != asio::error::eof && ec != asio::error::operation_aborted) close_reason_ = ec.message();
+            break;
+        }
+        last_activity_ = std::chrono::steady_clock::now();
+        pending.insert(pending.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
+
+        // Answer every whole frame now in the buffer, in order, in one write.
+        std::size_t offset = 0;
+        bool close_after = false;
+        replies.clear();
+        while (offset < pending.size()) {
+            auto outcome = core_.engine.process(std::span(pending).subspan(offset), policy_, session_);
+            if (outcome.action == Outcome::Action::NeedMore) break;
+            log_outcome(peer_, outcome);
+            offset += outcome.consumed;
+            if (outcome.action == Outcome::Action::Respond)
+                replies.insert(replies.end(), outcome.response.begin(), outcome.response.end());
+            if (outcome.action == Outcome::Action::Close) {
+                close_after = true;
+                close_reason_ = outcome.note;
+                break;
+            }
+        }
+        pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(offset));
+        if (!replies.empty()) {
+            co_await asio::async_write(socket_, asio::buffer(replies), asio::redirect_error(use_awaitable, ec));
+            if (ec) {
+                close_reason_ = "write failed: " + ec.message();
+                break;
+            }
+        }
+        if (close_after) break;
+    }
+    finish(close_reason_);
+}
+
+awaitable<void> TcpSession::watch_idle() {
+    auto self = shared_from_this();
+    while (!closed_) {
+        auto deadline = last_activity_ + idle_timeout_;
+        if (std::chrono::steady_clock::now() >= deadline) {
+            close_reason_ = "idle for " + std::to_string(idle_timeout_.count()) + " ms (idle timeout)";
+            close();   // serve() sees the error and finishes
+            co_return;
+        }
+        idle_timer_.expires_at(deadline);
+        boost::system::error_code ec;
+        co_await idle_timer_.async_wait(asio::redirect_error(use_awaitable, ec));
+    }
+}
+
+}  // namespace slmp::server

@@ -1,0 +1,48 @@
+// One TCP connection: frames are cut from the stream by their length field, so
+// a request split over many segments is assembled and several requests in one
+// segment are all answered, in order. An idle watchdog closes silent
+// connections.
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "server/asio.hpp"
+
+#include "config/config.hpp"
+#include "server/core.hpp"
+
+namespace slmp::server {
+
+class TcpSession : public std::enable_shared_from_this<TcpSession> {
+public:
+    TcpSession(boost::asio::ip::tcp::socket socket, Core& core, const config::PortConfig& port,
+               std::function<void(TcpSession*)> on_closed);
+
+    void start();
+    void close();   // from the server at shutdown, or the watchdog
+    const std::string& peer() const { return peer_; }
+
+private:
+    boost::asio::awaitable<void> serve();
+    boost::asio::awaitable<void> watch_idle();
+    void finish(const std::string& why);
+
+    boost::asio::ip::tcp::socket socket_;
+    Core& core_;
+    protocol::DataCodePolicy policy_;
+    std::chrono::milliseconds idle_timeout_;
+    std::chrono::steady_clock::time_point last_activity_;
+    boost::asio::steady_timer idle_timer_;
+    protocol::Session session_;
+    std::string peer_;
+    std::string close_reason_ = "closed by the client";
+    std::function<void(TcpSession*)> on_closed_;
+    bool closed_ = false;
+};
+
+protocol::DataCodePolicy to_policy(config::DataCode code);
+
+}  // namespace slmp::server

@@ -1,0 +1,33 @@
+// A UDP port: one datagram is one request, answered to the sender's address
+// and port. No connection, so one protocol session serves the port.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "server/asio.hpp"
+
+#include "config/config.hpp"
+#include "server/core.hpp"
+
+namespace slmp::server {
+
+class UdpListener {
+public:
+    UdpListener(boost::asio::io_context& io, Core& core, const config::PortConfig& port,
+                const boost::asio::ip::address& bind);
+
+    std::uint16_t port() const { return port_; }
+    void stop();
+
+private:
+    boost::asio::awaitable<void> serve();
+
+    Core& core_;
+    protocol::DataCodePolicy policy_;
+    boost::asio::ip::udp::socket socket_;
+    protocol::Session session_;
+    std::uint16_t port_ = 0;
+};
+
+}  // namespace slmp::server
