@@ -12,6 +12,7 @@
 #include "devicemodel/cpu.hpp"
 #include "devicemodel/cpu_profile.hpp"
 #include "devicemodel/device_table.hpp"
+#include "devicemodel/runtime_config.hpp"
 
 namespace slmp::config {
 
@@ -48,6 +49,49 @@ struct InitialValue {
     std::vector<std::uint32_t> values;     // consecutive devices from `address`
 };
 
+// An intelligent function module with buffer memory (U(io)\G, 0601/1601).
+struct ModuleConfig {
+    std::uint16_t io_number = 0;          // start I/O ÷ 16: "start_io": "0030" -> 3
+    std::string model;
+    std::uint32_t buffer_words = 0;
+    std::uint32_t head_address = 0;       // 0601/1601 address of buffer word 0
+};
+
+// A network module whose link devices are reached as J(number)\X/Y/B/SB/W/SW.
+struct NetworkConfig {
+    std::uint16_t number = 0;
+    devicemodel::DeviceSizes sizes{};
+};
+
+// CPU No.2–4 of a multi-CPU system (module I/O 03E1–03E3).
+struct CpuConfig {
+    int number = 2;
+    std::string profile;
+    std::vector<std::pair<devicemodel::Area, std::uint32_t>> device_sizes;
+    std::vector<InitialValue> devices;
+};
+
+// The HTTP control API, metrics and web monitor (docs/api.md).
+struct HttpConfig {
+    bool enabled = true;
+    std::uint16_t port = 8080;             // 0: any free port (see ready_file)
+    std::string bind;                      // empty: the SLMP bind address
+};
+
+// The running CPU ("cpu" key; docs/cpu-runtime.md). The key lists name each
+// timer/counter/latch entry's JSON pointer for messages at validation time.
+struct CpuRuntimeConfig {
+    devicemodel::RuntimeConfig runtime;
+    std::vector<std::string> timer_keys, counter_keys, latch_keys;
+};
+
+// The state directory: device memory saved atomically and restored at start.
+struct PersistenceConfig {
+    std::string state_dir;                 // empty: nothing touches disk
+    double snapshot_interval_s = 0;        // 0: only at shutdown and on SIGUSR1
+    bool restore_all = false;              // false: only latched devices come back (a power cycle)
+};
+
 struct ServerConfig {
     std::string profile = "R08CPU";
     std::string bind = "0.0.0.0";
@@ -57,6 +101,14 @@ struct ServerConfig {
     std::vector<InitialValue> devices;
     std::string log_level = "info";
     std::string ready_file;                // written with the bound ports once listening
+    HttpConfig http;
+    std::vector<ModuleConfig> modules;     // on CPU No.1
+    std::vector<NetworkConfig> networks;   // on CPU No.1
+    std::vector<CpuConfig> cpus;           // CPU No.2–4
+    CpuRuntimeConfig cpu;                  // CPU No.1's runtime parameters
+    PersistenceConfig persistence;
+    std::vector<std::string> scenarios;    // --scenario files, run together (docs/scenarios.md)
+    std::string record_file;               // --record: every request and response as JSON lines
 };
 
 // Reads a configuration file; keys left out keep the defaults above.
@@ -67,5 +119,15 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
 devicemodel::CpuProfile resolve_profile(const ServerConfig& config);
 // Writes the configured initial device values into a CPU (checked against its sizes).
 void apply_initial_values(devicemodel::Cpu& cpu, const ServerConfig& config);
+void apply_initial_values(devicemodel::Cpu& cpu, const std::vector<InitialValue>& values);
+// Adds the configured modules and networks to CPU No.1.
+void attach_hardware(devicemodel::Cpu& cpu, const ServerConfig& config);
+// The profile of CPU No.2–4, with its size overrides.
+devicemodel::CpuProfile resolve_profile(const CpuConfig& cpu);
+// The "cpu" parameters checked against the CPU's profile (device sizes, the
+// family's password length rule); throws ConfigError naming the key and the fix.
+devicemodel::RuntimeConfig checked_runtime_config(const CpuRuntimeConfig& cpu, const devicemodel::CpuProfile& profile);
+// "RUN" or "STOP" (any case); `where` names the option or key in the error.
+devicemodel::RunSwitch parse_run_switch(const std::string& text, const std::string& where);
 
 }  // namespace slmp::config

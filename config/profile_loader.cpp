@@ -55,6 +55,12 @@ devicemodel::PointLimit limit(const JsonAt& at) {
     return {static_cast<std::uint32_t>(at["max"].unsigned_int(65535)), at["end_code"].hex_code()};
 }
 
+devicemodel::FormLimit form_limit(const JsonAt& at) {
+    at.only_keys({"q", "iqr", "end_code"});
+    return {static_cast<std::uint32_t>(at["q"].unsigned_int(65535)), static_cast<std::uint32_t>(at["iqr"].unsigned_int(65535)),
+            at["end_code"].hex_code()};
+}
+
 std::vector<Area> areas(const JsonAt& at) {
     at.expect_array();
     std::vector<Area> list;
@@ -69,7 +75,8 @@ CpuProfile parse_profile(const std::string& json_text, const std::string& source
     JsonAt root(json, source);
     root.only_keys({"name", "description", "type_name", "model_code", "family", "frame_4e", "iqr_subcommands",
                     "unsupported_commands", "end_codes", "limits", "device_sizes", "start_only_range_check",
-                    "read_only_devices", "size_registers", "zr_ascii_hex"});
+                    "read_only_devices", "size_registers", "zr_ascii_hex", "mixed_block_write",
+                    "station_buffer_words", "remote_password_length"});
     CpuProfile p;
     p.name = root["name"].string();
     p.type_name = root["type_name"].string();
@@ -91,11 +98,23 @@ CpuProfile parse_profile(const std::string& json_text, const std::string& source
     p.bad_unit_code = codes["bad_unit"].hex_code();
 
     auto limits = root["limits"];
-    limits.only_keys({"batch_words", "batch_bits_binary", "batch_bits_ascii", "loopback_bytes"});
+    limits.only_keys({"batch_words", "batch_bits_binary", "batch_bits_ascii", "loopback_bytes", "random_read_points",
+                      "random_write_weight", "random_write_bits", "monitor_points", "block_count", "block_points",
+                      "extended_over_limit_code"});
     p.batch_words = limit(limits["batch_words"]);
     p.batch_bits_binary = limit(limits["batch_bits_binary"]);
     p.batch_bits_ascii = limit(limits["batch_bits_ascii"]);
     p.loopback_max_bytes = static_cast<std::uint32_t>(limits["loopback_bytes"].unsigned_int(65535));
+    p.random_read_points = form_limit(limits["random_read_points"]);
+    p.random_write_weight = form_limit(limits["random_write_weight"]);
+    p.random_write_bits = form_limit(limits["random_write_bits"]);
+    p.monitor_points = form_limit(limits["monitor_points"]);
+    p.block_count = form_limit(limits["block_count"]);
+    p.block_points = limit(limits["block_points"]);
+    if (limits.has("extended_over_limit_code")) p.extended_over_limit_code = limits["extended_over_limit_code"].hex_code();
+    p.mixed_block_write = refusal(root["mixed_block_write"]);
+    if (root.has("station_buffer_words"))
+        p.station_buffer_words = static_cast<std::uint32_t>(root["station_buffer_words"].unsigned_int(0x7FFFFFFF));
 
     auto sizes = root["device_sizes"];
     sizes.expect_object();
@@ -120,6 +139,16 @@ CpuProfile parse_profile(const std::string& json_text, const std::string& source
         p.size_registers.push_back({area(reg["device"]), sd, static_cast<std::uint8_t>(bits)});
     }
     p.zr_ascii_hex = root["zr_ascii_hex"].boolean();
+    if (root.has("remote_password_length")) {
+        // [min, max] characters, e.g. [4, 4] for Q/L, [6, 32] for iQ-R.
+        auto rule = root["remote_password_length"];
+        rule.expect_array();
+        if (rule.json().size() != 2) rule.fail("must be [min, max]", "write e.g. [6, 32] (iQ-R) or [4, 4] (Q/L)");
+        p.password_min_length = static_cast<std::uint8_t>(rule[0].unsigned_int(32));
+        p.password_max_length = static_cast<std::uint8_t>(rule[1].unsigned_int(32));
+        if (p.password_min_length == 0 || p.password_min_length > p.password_max_length)
+            rule.fail("min must be 1..max", "write e.g. [6, 32] (iQ-R) or [4, 4] (Q/L)");
+    }
     return p;
 }
 

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "config/config.hpp"
+#include "config/config_parts.hpp"
 #include "config/json_path.hpp"
 
 namespace slmp::config {
@@ -63,7 +64,34 @@ InitialValue initial_value(const std::string& address_text, const JsonAt& at) {
     return v;
 }
 
+HttpConfig http_config(const JsonAt& at) {
+    at.only_keys({"enabled", "port", "bind"});
+    HttpConfig h;
+    if (at.has("enabled")) h.enabled = at["enabled"].boolean();
+    if (at.has("port")) h.port = static_cast<std::uint16_t>(at["port"].unsigned_int(65535));
+    if (at.has("bind")) h.bind = at["bind"].string();
+    return h;
+}
+
 }  // namespace
+
+std::vector<std::pair<Area, std::uint32_t>> parse_device_sizes(const JsonAt& sizes) {
+    sizes.expect_object();
+    std::vector<std::pair<Area, std::uint32_t>> list;
+    for (const auto& [name, _] : sizes.json().items()) {
+        auto a = devicemodel::area_by_name(name);
+        if (!a) sizes[name].fail("unknown device '" + name + "'", "use a device area such as X, M, D, T, ZR, LZ");
+        list.emplace_back(*a, static_cast<std::uint32_t>(sizes[name].unsigned_int(0x7FFFFFFF)));
+    }
+    return list;
+}
+
+std::vector<InitialValue> parse_initial_values(const JsonAt& devices) {
+    devices.expect_object();
+    std::vector<InitialValue> list;
+    for (const auto& [address, _] : devices.json().items()) list.push_back(initial_value(address, devices[address]));
+    return list;
+}
 
 DataCode parse_data_code(const std::string& text, const std::string& where) {
     if (text == "binary") return DataCode::Binary;
@@ -75,7 +103,8 @@ DataCode parse_data_code(const std::string& text, const std::string& where) {
 ServerConfig parse_server_config(const std::string& json_text, const std::string& source) {
     auto json = parse_json(json_text, source);
     JsonAt root(json, source);
-    root.only_keys({"profile", "bind", "ports", "max_request_bytes", "device_sizes", "devices", "log_level"});
+    root.only_keys({"profile", "bind", "ports", "max_request_bytes", "device_sizes", "devices", "log_level", "modules",
+                    "networks", "cpus", "http", "cpu", "state_dir", "snapshot_interval_s", "restore"});
     ServerConfig c;
     if (root.has("profile")) c.profile = root["profile"].string();
     if (root.has("bind")) c.bind = root["bind"].string();
@@ -89,21 +118,12 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
         c.max_request_bytes = root["max_request_bytes"].unsigned_int(1 << 20);
         if (c.max_request_bytes < 64) root["max_request_bytes"].fail("too small", "use at least 64 (default 8192)");
     }
-    if (root.has("device_sizes")) {
-        auto sizes = root["device_sizes"];
-        sizes.expect_object();
-        for (const auto& [name, _] : sizes.json().items()) {
-            auto a = devicemodel::area_by_name(name);
-            if (!a) sizes[name].fail("unknown device '" + name + "'", "use a device area such as X, M, D, T, ZR, LZ");
-            c.device_sizes.emplace_back(*a, static_cast<std::uint32_t>(sizes[name].unsigned_int(0x7FFFFFFF)));
-        }
-    }
-    if (root.has("devices")) {
-        auto devices = root["devices"];
-        devices.expect_object();
-        for (const auto& [address, _] : devices.json().items()) c.devices.push_back(initial_value(address, devices[address]));
-    }
+    if (root.has("device_sizes")) c.device_sizes = parse_device_sizes(root["device_sizes"]);
+    if (root.has("devices")) c.devices = parse_initial_values(root["devices"]);
     if (root.has("log_level")) c.log_level = root["log_level"].string();
+    if (root.has("http")) c.http = http_config(root["http"]);
+    parse_hardware(root, c);
+    parse_cpu_runtime(root, c);
     return c;
 }
 
@@ -122,7 +142,11 @@ devicemodel::CpuProfile resolve_profile(const ServerConfig& config) {
 }
 
 void apply_initial_values(devicemodel::Cpu& cpu, const ServerConfig& config) {
-    for (const auto& v : config.devices) {
+    apply_initial_values(cpu, config.devices);
+}
+
+void apply_initial_values(devicemodel::Cpu& cpu, const std::vector<InitialValue>& values) {
+    for (const auto& v : values) {
         const auto& spec = *v.address.spec;
         if (!cpu.memory().contains(spec.area, v.address.number, v.values.size()))
             throw ConfigError("devices: " + devicemodel::format_address(v.address) + " with " +

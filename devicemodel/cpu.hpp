@@ -2,10 +2,23 @@
 // device memory goes through a Cpu, on the server's single core thread.
 #pragma once
 
+#include <map>
+#include <memory>
+#include <string>
+
 #include "devicemodel/cpu_profile.hpp"
 #include "devicemodel/device_memory.hpp"
+#include "devicemodel/runtime.hpp"
 
 namespace slmp::devicemodel {
+
+// An intelligent function module's buffer memory, reached as U(io)\G(n) by the
+// 008x device commands and as bytes by Extend Unit 0601/1601.
+struct Module {
+    std::string model;
+    std::uint32_t head_address;   // 0601/1601 start address of buffer word 0 (the module's table entry)
+    DeviceMemory memory;          // area G only
+};
 
 class Cpu {
 public:
@@ -19,11 +32,30 @@ public:
     // fit, except in areas where the profile checks only the start (iQ-R R/ZR).
     bool in_range(Area area, std::uint64_t start, std::uint64_t count) const;
 
+    // Modules by start I/O number ÷ 16 (the "U" number); null when none is there.
+    Module* module(std::uint16_t io_number);
+    void add_module(std::uint16_t io_number, std::string model, std::uint32_t buffer_words, std::uint32_t head_address);
+    // Link devices (X Y B SB W SW) of the network module on network `number` (J□\...).
+    DeviceMemory* network(std::uint16_t number);
+    void add_network(std::uint16_t number, const DeviceSizes& sizes);
+    // What Memory Read/Write 0613/1613 reach: the CPU buffer memory (area G of
+    // this CPU) unless the profile gives the port a buffer memory of its own.
+    DeviceMemory& station_buffer() { return station_buffer_ ? *station_buffer_ : memory_; }
+
+    // Operating state, scan cycle, timers, special registers, remote password
+    // (devicemodel/runtime.hpp); its operations take memory() explicitly.
+    Runtime& runtime() { return runtime_; }
+    const Runtime& runtime() const { return runtime_; }
+
 private:
     void publish_device_sizes();
 
     CpuProfile profile_;
     DeviceMemory memory_;
+    std::unique_ptr<DeviceMemory> station_buffer_;
+    std::map<std::uint16_t, std::unique_ptr<Module>> modules_;
+    std::map<std::uint16_t, std::unique_ptr<DeviceMemory>> networks_;
+    Runtime runtime_{profile_.family};
 };
 
 }  // namespace slmp::devicemodel

@@ -27,6 +27,15 @@ struct PointLimit {
     std::uint16_t end_code = 0;
 };
 
+// A limit that depends on the subcommand family: Q form (00□0/00□1) or iQ-R
+// form (00□2/00□3). With the Q form's extended subcommands (0080/0081) each
+// point or block counts twice (slmp-frames-and-devices.md §6.3–§6.8, *1).
+struct FormLimit {
+    std::uint32_t q = 0;
+    std::uint32_t iqr = 0;
+    std::uint16_t end_code = 0;
+};
+
 // A special register that publishes one device's configured size (§6).
 struct SizeRegister {
     Area area;
@@ -56,12 +65,30 @@ struct CpuProfile {
     PointLimit batch_bits_binary;     // 0401/1401 bit units, binary code
     PointLimit batch_bits_ascii;      // 0401/1401 bit units, ASCII code
     std::uint32_t loopback_max_bytes = 960;
+    FormLimit random_read_points;     // 0403: word + double-word points
+    FormLimit random_write_weight;    // 1402 word units: 12·words + 14·double words
+    FormLimit random_write_bits;      // 1402 bit units: points
+    FormLimit monitor_points;         // 0801: word + double-word points
+    FormLimit block_count;            // 0406/1406: word blocks + bit blocks
+    PointLimit block_points;          // 0406/1406: total points (1406 adds 4 or 9 per block)
+    // Over-limit 008x random/monitor access answers this instead (QJ71E71-100:
+    // 4080); 0 = the limit's own code.
+    std::uint16_t extended_over_limit_code = 0;
+    Refusal mixed_block_write;        // 1406 with word and bit blocks in one request
 
     DeviceSizes sizes{};
     std::vector<Area> start_only_range_check;   // iQ-R: R and ZR check the start only
     std::vector<Area> read_only;                // S over built-in Ethernet
     std::vector<SizeRegister> size_registers;
     bool zr_ascii_hex = false;        // ASCII frames number ZR in hex (the manuals' form)
+    // 0613/1613 reach a buffer memory of the port's own (e.g. a QJ71E71-100) of
+    // this many words; 0 = the CPU buffer memory (area G of the CPU).
+    std::uint32_t station_buffer_words = 0;
+
+    // Remote password length rule (slmp-labels-remote-misc.md §6): Q/L exactly 4
+    // characters, iQ-R 6-32. 0/0: the port has no remote password (1630/1631 -> C059).
+    std::uint8_t password_min_length = 0;
+    std::uint8_t password_max_length = 0;
 
     std::uint32_t size(Area area) const { return sizes[static_cast<std::size_t>(area)]; }
 };

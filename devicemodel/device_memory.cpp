@@ -1,6 +1,7 @@
 #include "devicemodel/device_memory.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace slmp::devicemodel {
 namespace {
@@ -52,7 +53,10 @@ bool DeviceMemory::bit(const DeviceSpec& spec, std::uint32_t number) const {
 void DeviceMemory::set_bit(const DeviceSpec& spec, std::uint32_t number, bool on) {
     auto& s = store(spec.area);
     auto& plane = spec.part == Part::Coil ? s.coils : s.bits;
-    if (number < plane.size()) plane[number] = on ? 1 : 0;
+    if (number >= plane.size()) return;
+    std::uint8_t now = on ? 1 : 0;
+    if (observer_ && plane[number] != now) observer_->written(spec, number, 1);
+    plane[number] = now;
 }
 
 std::uint32_t DeviceMemory::value(const DeviceSpec& spec, std::uint32_t number) const {
@@ -65,7 +69,10 @@ std::uint32_t DeviceMemory::value(const DeviceSpec& spec, std::uint32_t number) 
 void DeviceMemory::set_value(const DeviceSpec& spec, std::uint32_t number, std::uint32_t value) {
     if (spec.unit == Unit::Bit) return set_bit(spec, number, value != 0);
     auto& values = store(spec.area).values;
-    if (number < values.size()) values[number] = spec.unit == Unit::Word ? value & 0xFFFF : value;
+    if (number >= values.size()) return;
+    auto now = spec.unit == Unit::Word ? value & 0xFFFF : value;
+    if (observer_ && values[number] != now) observer_->written(spec, number, 1);
+    values[number] = now;
 }
 
 void DeviceMemory::read_words(const DeviceSpec& spec, std::uint32_t start, std::span<std::uint16_t> out) const {
@@ -116,6 +123,9 @@ void DeviceMemory::write_words(const DeviceSpec& spec, std::uint32_t start, std:
         auto number = start + static_cast<std::uint32_t>(i / per_device);
         if (number >= s.values.size()) continue;
         auto& v = s.values[number];
+        // LTN/LSTN carry a status word (coil, contact); LCN and LZ do not.
+        auto status = [&] { return per_device == 4 ? s.coils[number] | s.bits[number] << 1 : 0; };
+        const auto before = std::pair(v, status());
         switch (i % per_device) {
             case 0: v = (v & 0xFFFF0000u) | in[i]; break;
             case 1: v = (v & 0x0000FFFFu) | (std::uint32_t{in[i]} << 16); break;
@@ -125,6 +135,7 @@ void DeviceMemory::write_words(const DeviceSpec& spec, std::uint32_t start, std:
                 break;
             default: break;  // system word: not stored
         }
+        if (observer_ && before != std::pair(v, status())) observer_->written(spec, number, 1);
     }
 }
 

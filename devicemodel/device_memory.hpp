@@ -12,6 +12,18 @@
 
 namespace slmp::devicemodel {
 
+// Told about every change to a DeviceMemory that has it attached (the HTTP
+// API's change stream): a write that stores the value already there is not
+// reported. Calls come per device; the observer coalesces them into runs.
+// Detached (null) costs one branch per write.
+class WriteObserver {
+public:
+    virtual void written(const DeviceSpec& spec, std::uint32_t first, std::uint32_t count) = 0;
+
+protected:
+    ~WriteObserver() = default;
+};
+
 class DeviceMemory {
 public:
     // `slack_words` extra words are kept behind R/ZR so that iQ-R's start-only
@@ -42,6 +54,8 @@ public:
     // Whether devices [start, start + count) exist (count in devices, not words).
     bool contains(Area area, std::uint64_t start, std::uint64_t count) const;
 
+    void set_write_observer(WriteObserver* observer) { observer_ = observer; }
+
 private:
     struct Store {
         std::vector<std::uint8_t> bits;      // plain bit areas; contacts of T/C areas
@@ -54,6 +68,7 @@ private:
 
     DeviceSizes sizes_;
     std::vector<Store> stores_;
+    WriteObserver* observer_ = nullptr;
 };
 
 }  // namespace slmp::devicemodel

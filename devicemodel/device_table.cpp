@@ -56,12 +56,14 @@ constexpr std::array kDevices = {
     DeviceSpec{"R", 0x00AF, 0xAF, "R*", R, Plain, Word, Dec, "file register (block switching)"},
     DeviceSpec{"ZR", 0x00B0, 0xB0, "ZR", ZR, Plain, Word, Dec, "file register (serial number access)"},
     DeviceSpec{"RD", 0x002C, -1, "", RD, Plain, Word, Dec, "refresh data register"},
+    DeviceSpec{"G", 0x00AB, 0xAB, "G*", G, Plain, Word, Dec, "buffer memory", true},
+    DeviceSpec{"HG", 0x002E, -1, "", HG, Plain, Word, Dec, "CPU buffer memory fixed-cycle area", true},
 };
 
 constexpr std::array<std::string_view, static_cast<std::size_t>(Area::Count)> kAreaNames = {
     "X", "Y", "M", "L", "F", "V", "B", "SB", "S", "SM",
     "D", "W", "SW", "SD", "R", "ZR", "RD", "Z", "LZ",
-    "T", "ST", "C", "LT", "LST", "LC"};
+    "T", "ST", "C", "LT", "LST", "LC", "G", "HG"};
 
 bool iequals(std::string_view a, std::string_view b) {
     return a.size() == b.size() &&

@@ -23,6 +23,7 @@ enum class Area : std::uint8_t {
     D, W, SW, SD, R, ZR, RD, Z,               // word areas
     LZ,                                       // double-word area
     T, ST, C, LT, LST, LC,                    // timers and counters
+    G, HG,                                    // buffer memory (module, CPU buffer, its fixed-cycle area)
     Count
 };
 
@@ -42,6 +43,10 @@ struct DeviceSpec {
     Unit unit;
     Radix radix;                 // numbering in address text and in ASCII frames
     std::string_view name;       // English name, for messages and docs
+    // G and HG exist only behind an extension (module access U1 G10, CPU buffer
+    // U3E0 G10 / HG10; subcommands 008x): named as plain devices they answer C05B
+    // (hardware-behaviour.md §7).
+    bool extension_only = false;
 };
 
 // The table itself, in the manual's order.

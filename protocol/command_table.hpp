@@ -22,12 +22,14 @@ struct CommandSpec;
 // What a handler gets. It reads fields from `in`, writes response data to
 // `out`, and returns the end code (Ok, or the error; `out` is dropped then).
 struct CommandContext {
-    devicemodel::Cpu& cpu;
+    devicemodel::Cpu& cpu;         // the CPU the request's module I/O number selects
+    const CpuSet& cpus;            // every CPU of the station (U3E1\G reaches CPU No.2)
     const FrameHeader& header;
     const CommandSpec& spec;
     Session& session;
     FieldReader& in;
     FieldWriter& out;
+    bool restarted = false;        // Remote RESET succeeded: no response, every connection closes
 };
 
 using Handler = EndCode (*)(CommandContext&);
@@ -39,6 +41,8 @@ struct CommandSpec {
     Handler handler;
     DeviceForm form = DeviceForm::Q;
     Access access = Access::None;
+    bool extended = false;         // 008x: devices in the extended layout (Appendix 1)
+    bool control_cpu_only = false; // refused for CPU No.2–4 of a multi-CPU system (Appendix 3)
 };
 
 std::span<const CommandSpec> all_commands();

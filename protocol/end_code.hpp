@@ -26,6 +26,36 @@ enum class EndCode : std::uint16_t {
     BadRequestContent = 0xC05C,
     LengthMismatch = 0xC061,
     RemotePasswordLocked = 0xC201,
+    RemoteResetDisabled = 0x4014,       // 1006 with the remote reset parameter off (chosen, docs/cpu-runtime.md)
+    RemoteHeldByOther = 0x4015,         // 1001/1003 mode 0001, 1005: another client holds remote STOP/PAUSE (chosen)
+    RemotePasswordLockedOut = 0xC815,   // 1630/1631 during the lock-out after repeated mismatches (chosen in C810-C815)
+    // Codes the simulator does not send (yet) but real CPUs and modules answer;
+    // named here so describe() explains them to CLI users and in logs.
+    // Sources: hardware-behaviour.md §2, slmp-frames-and-devices.md §3.5,
+    // slmp-labels-remote-misc.md §10.2, §10.4 (L-series manual, marked [ext]).
+    RunWriteProhibited = 0x0055,        // [ext] write to a CPU in RUN while online change is disabled
+    ModuleNotPresent = 0x4043,          // 0601/1601 with module number 0000
+    ModuleNotAccessible = 0x4080,       // 0601/1601 with module number 03FF; QJ71E71 extended random over limit
+    LabelNotFound = 0x40C0,             // label missing or without "access from external device"
+    ExtendedTargetRefused = 0x414A,     // 1401 sub 0082 to a protected/unsupported extended target
+    RandomBitPointsOverLimit = 0xC053,
+    RandomWordPointsOverLimit = 0xC054,
+    AsciiLengthMismatch = 0xC058,       // [ext]
+    MonitorNotRegistered = 0xC05D,      // [ext] 0802 without a 0801 registration
+    NotExecutableOnCpu = 0xC05F,        // [ext]
+    BadRequestData = 0xC060,            // [ext]
+    DataCodeMismatch = 0xC06F,          // [ext] ASCII to a binary port or the reverse
+    RemotePasswordMismatchCount = 0xC200,   // [ext] E71: unlock/lock failures over the notification count
+    RemotePasswordMismatch = 0xC810,    // wrong password on Unlock; C811–C815 are the same family
+    Busy = 0xCEE0,
+    RequestTooLarge = 0xCEE1,
+    ResponseTooLarge = 0xCEE2,
+    ServerInfoNotFound = 0xCF10,
+    SettingNotAllowed = 0xCF20,
+    ParameterIdNotFound = 0xCF30,
+    ExclusiveStartMissing = 0xCF31,
+    RelayRouteError = 0xCF70,
+    RelayTimeout = 0xCF71,
 };
 
 constexpr EndCode end_code(std::uint16_t raw) { return static_cast<EndCode>(raw); }

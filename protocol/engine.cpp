@@ -4,6 +4,7 @@
 #include <string>
 
 #include "protocol/command_table.hpp"
+#include "protocol/error_response.hpp"
 #include "protocol/hex.hpp"
 #include "protocol/message.hpp"
 
@@ -20,12 +21,18 @@ std::string hex(std::uint32_t value, unsigned digits) {
 std::string hex4(std::uint16_t value) { return hex(value, 4); }
 
 // The own station (§3.1.3–§3.1.5): anything else would need routing, which a
-// CPU's built-in port cannot do. The codes are chosen; see docs/end-codes.md.
-EndCode check_route(const Route& route) {
+// CPU's built-in port cannot do. Module I/O 03FF is the connected CPU, 03E0–03E3
+// CPU No.1–4 of a multi-CPU system. The codes are chosen; see docs/end-codes.md.
+EndCode check_route(const Route& route, const CpuSet& cpus, devicemodel::Cpu*& target) {
     if (route.network != 0x00) return EndCode::RouteNetworkNotFound;
     if (route.station != 0xFF || route.multidrop != 0x00) return EndCode::RouteStationNotFound;
-    if (route.module_io != 0x03FF && route.module_io != 0x03E0) return EndCode::RouteNotCpu;
-    return EndCode::Ok;
+    if (route.module_io == 0x03FF) {
+        target = cpus[0];
+        return EndCode::Ok;
+    }
+    if (route.module_io < 0x03E0 || route.module_io > 0x03E3) return EndCode::RouteNotCpu;
+    target = cpus[route.module_io - 0x03E0u];
+    return target ? EndCode::Ok : EndCode::RouteNotCpu;
 }
 
 class Reply {
@@ -44,17 +51,11 @@ public:
     // End code, then the error information: the responding station's route and
     // the request's command and subcommand (spec §3.2.4; hardware-behaviour §1).
     Outcome error(EndCode code, std::string note) {
-        FieldWriter w(header_.codec);
-        w.u16(raw(code));
-        w.u8(header_.route.network);
-        w.u8(header_.route.station);
-        w.u16(header_.route.module_io);
-        w.u8(header_.route.multidrop);
-        w.u16(outcome_.command);
-        w.u16(outcome_.subcommand);
         outcome_.end_code = code;
         outcome_.note = hex4(raw(code)) + " (" + std::string(describe(code)) + "): " + note;
-        return send(w.bytes());
+        outcome_.action = Outcome::Action::Respond;
+        outcome_.response = encode_error_response(header_, outcome_.command, outcome_.subcommand, code);
+        return std::move(outcome_);
     }
 
     Outcome refuse(const Refusal& refusal, std::string note) {
@@ -135,11 +136,20 @@ Outcome Engine::process(std::span<const std::uint8_t> input, DataCodePolicy poli
     }
 
     auto name = hex4(outcome.command) + "/" + hex4(outcome.subcommand);
-    if (auto code = check_route(header.route); code != EndCode::Ok)
+    devicemodel::Cpu* target = nullptr;
+    if (auto code = check_route(header.route, cpus_, target); code != EndCode::Ok)
         return reply.error(code, "request for network " + hex(header.route.network, 2) + " station " +
                                      hex(header.route.station, 2) + " module I/O " + hex4(header.route.module_io) +
                                      " multidrop " + hex(header.route.multidrop, 2) +
-                                     "; only the own station (00/FF/03FF or 03E0/00) is served");
+                                     "; only the own station (00/FF/03FF/00) and its configured CPUs "
+                                     "(module I/O 03E0-03E3) are served");
+
+    // Remote password (slmp-labels-remote-misc.md §6): a locked connection gets
+    // C201 for everything but Unlock 1630 and Lock 1631 (a no-op while locked).
+    if (cpu_.runtime().password().configured() && !session.password_unlocked && outcome.command != 0x1630 &&
+        outcome.command != 0x1631)
+        return reply.error(EndCode::RemotePasswordLocked,
+                           "this connection is locked by the remote password; send Unlock 1630 with the password first");
 
     const auto& unsupported = profile.unsupported_commands;
     if (std::find(unsupported.begin(), unsupported.end(), outcome.command) != unsupported.end())
@@ -158,14 +168,19 @@ Outcome Engine::process(std::span<const std::uint8_t> input, DataCodePolicy poli
         return reply.error(end_code(profile.not_supported_code), why);
     }
 
-    FieldWriter out(header.codec, CodecOptions{profile.zr_ascii_hex});
-    CommandContext ctx{cpu_, header, *spec, session, in, out};
+    if (spec->control_cpu_only && target != cpus_[0])
+        return reply.error(end_code(profile.not_supported_code),
+                           std::string(spec->name) + " cannot reach CPU No.2-4 of a multi-CPU system (Appendix 3)");
+
+    FieldWriter out(header.codec, CodecOptions{target->profile().zr_ascii_hex});
+    CommandContext ctx{*target, cpus_, header, *spec, session, in, out};
     auto code = spec->handler(ctx);
     if (code != EndCode::Ok) {
         auto why = std::string(spec->name);
         if (!in.ok()) why += ": bad or missing field '" + std::string(in.error_field()) + "'";
         return reply.error(code, why);
     }
+    if (ctx.restarted) return reply.drop(Outcome::Action::Restart, "");   // §5.6: no response on success
     return reply.ok(out.bytes());
 }
 

@@ -2,6 +2,7 @@
 // threads; the TCP and UDP front ends and the unit tests all call process().
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -9,15 +10,32 @@
 
 #include "devicemodel/cpu.hpp"
 #include "protocol/end_code.hpp"
+#include "protocol/fields.hpp"
 #include "protocol/frame.hpp"
 
 namespace slmp::protocol {
 
+// Devices registered by Entry Monitor Device 0801 for Execute Monitor 0802.
+// Kept as they arrived, so index registers are applied at every 0802.
+struct MonitorRegistration {
+    bool registered = false;
+    DeviceForm form = DeviceForm::Q;
+    std::vector<DeviceField> words;
+    std::vector<DeviceField> dwords;
+};
+
 // Per-connection state (one per TCP connection; one per UDP port). It grows
-// with monitor registrations and the remote password lock.
+// with the remote password lock.
 struct Session {
     std::uint64_t id = 0;
+    MonitorRegistration monitor;   // per connection: another client's 0801 does not replace it
+    // Remote password (1630/1631): a connection starts locked whenever the CPU
+    // has a password; Unlock opens this connection only (slmp-labels-remote-misc.md §6).
+    bool password_unlocked = false;
 };
+
+// CPU No.1–4 of a multi-CPU system; [0] is the CPU whose port the client uses.
+using CpuSet = std::array<devicemodel::Cpu*, 4>;
 
 struct EngineOptions {
     std::size_t max_frame_bytes = 8192;   // a larger length field closes the connection
@@ -29,6 +47,8 @@ struct Outcome {
         Respond,    // send `response`
         Silent,     // consume and send nothing (garbage, frames the port ignores)
         Close,      // close the connection (oversized frame, profile says so)
+        Restart,    // Remote RESET succeeded: the CPU has restarted; send nothing and
+                    // close every connection of the station (§5.6)
     };
     Action action = Action::NeedMore;
     std::size_t consumed = 0;
@@ -41,7 +61,11 @@ struct Outcome {
 
 class Engine {
 public:
-    Engine(devicemodel::Cpu& cpu, EngineOptions options = {}) : cpu_(cpu), options_(options) {}
+    Engine(devicemodel::Cpu& cpu, EngineOptions options = {}) : cpu_(cpu), options_(options) { cpus_[0] = &cpu; }
+
+    // Adds CPU No.2–4 of a multi-CPU system, reached with module I/O 03E1–03E3.
+    void add_cpu(int number, devicemodel::Cpu& cpu) { cpus_.at(static_cast<std::size_t>(number - 1)) = &cpu; }
+    const CpuSet& cpus() const { return cpus_; }
 
     // Looks at the start of `input` and handles at most one frame.
     Outcome process(std::span<const std::uint8_t> input, DataCodePolicy policy, Session& session);
@@ -51,6 +75,7 @@ public:
 
 private:
     devicemodel::Cpu& cpu_;
+    CpuSet cpus_{};
     EngineOptions options_;
 };
 

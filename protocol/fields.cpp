@@ -18,6 +18,22 @@ std::size_t code_bytes(DeviceForm form) { return form == DeviceForm::Q ? 1 : 2; 
 std::size_t number_bytes(DeviceForm form) { return form == DeviceForm::Q ? 3 : 4; }
 std::size_t ascii_code_chars(DeviceForm form) { return form == DeviceForm::Q ? 2 : 4; }
 
+const DeviceSpec* ascii_code(std::span<const std::uint8_t> code) {
+    if (code.empty()) return nullptr;
+    return devicemodel::find_by_ascii(std::string_view(reinterpret_cast<const char*>(code.data()), code.size()),
+                                      code.size());
+}
+
+// Binary modifier word: byte 0 = register number, byte 1 high nibble 4 = Z,
+// 8 = LZ (§7.5, §7.6).
+Modifier binary_modifier(std::uint16_t word) {
+    auto kind = (word >> 12) & 0xF;
+    Modifier m;
+    m.number = static_cast<std::uint8_t>(word & 0xFF);
+    m.reg = kind == 0x4 ? Modifier::Register::Z : kind == 0x8 ? Modifier::Register::LZ : Modifier::Register::None;
+    return m;
+}
+
 }  // namespace
 
 FieldReader::FieldReader(Codec codec, std::span<const std::uint8_t> data, CodecOptions options)
@@ -70,14 +86,17 @@ DeviceField FieldReader::device(DeviceForm form, std::string_view what) {
                                            : devicemodel::find_by_iqr_code(field.code);
         return field;
     }
-    // ASCII: code first, then the number in the device's own radix; leading
-    // zeros may be sent as spaces (§5.4).
-    auto code = take(ascii_code_chars(form), what);
-    auto digits = take(ascii_number_digits(form), what);
-    if (!ok()) return field;
-    field.spec = devicemodel::find_by_ascii(
-        std::string_view(reinterpret_cast<const char*>(code.data()), code.size()), code.size());
-    int radix = field.spec ? ascii_radix(*field.spec, options_) : 16;
+    // ASCII: code first, then the number in the device's own radix.
+    field.spec = ascii_code(take(ascii_code_chars(form), what));
+    field.number = device_number(field.spec, ascii_number_digits(form), what);
+    return field;
+}
+
+// Leading zeros may be sent as spaces (§5.4); an unknown device's number is
+// read as hex so that the reader stays in step.
+std::uint32_t FieldReader::device_number(const DeviceSpec* spec, std::size_t digits_count, std::string_view what) {
+    auto digits = take(digits_count, what);
+    int radix = spec ? ascii_radix(*spec, options_) : 16;
     std::size_t i = 0;
     while (i < digits.size() && digits[i] == ' ') ++i;
     std::uint64_t value = 0;
@@ -85,11 +104,91 @@ DeviceField FieldReader::device(DeviceForm form, std::string_view what) {
         auto parsed = parse_hex(digits.subspan(i, 1));
         if (!parsed || static_cast<int>(*parsed) >= radix) {
             fail(EndCode::AsciiConversion, what);
-            return field;
+            return 0;
         }
         value = value * static_cast<unsigned>(radix) + *parsed;
     }
-    field.number = static_cast<std::uint32_t>(value);
+    if (value > 0xFFFFFFFFu) fail(EndCode::BadRequestContent, what);
+    return static_cast<std::uint32_t>(value);
+}
+
+
+// ASCII modifier: "000" / "Znn" (Q form), "0000" / "Z nn" / "LZnn" (iQ-R form).
+Modifier FieldReader::ascii_modifier(std::size_t width, std::string_view what) {
+    auto chars = take(width, what);
+    Modifier m;
+    if (chars.empty()) return m;
+    std::string_view text(reinterpret_cast<const char*>(chars.data()), chars.size());
+    if (text.find_first_not_of('0') == std::string_view::npos) return m;
+    std::string_view digits;
+    if (text.starts_with("LZ")) {
+        m.reg = Modifier::Register::LZ;
+        digits = text.substr(2);
+    } else if (text.starts_with("Z")) {
+        m.reg = Modifier::Register::Z;
+        digits = text.substr(width == 4 ? 2 : 1);
+        if (width == 4 && text[1] != ' ' && text[1] != '0') digits = {};
+    }
+    if (digits.size() != 2 || digits.find_first_not_of("0123456789") != std::string_view::npos) {
+        fail(EndCode::BadRequestContent, what);
+        return {};
+    }
+    m.number = static_cast<std::uint8_t>((digits[0] - '0') * 10 + (digits[1] - '0'));
+    return m;
+}
+
+DeviceField FieldReader::extended_device(DeviceForm form, std::string_view what) {
+    DeviceField field;
+    field.extended = true;
+    auto& ext = field.extension;
+    if (codec_ == Codec::Binary) {
+        // device modification (2) | number | code | extension modification (2) |
+        // extension (2) | direct memory (1): F9 J, F8 U, FA U3E, 00 none.
+        auto device_mod = static_cast<std::uint16_t>(number(2, what));
+        field.number = number(number_bytes(form), what);
+        field.code = static_cast<std::uint16_t>(number(code_bytes(form), what));
+        ext.target_modifier = binary_modifier(static_cast<std::uint16_t>(number(2, what)));
+        ext.target = static_cast<std::uint16_t>(number(2, what));
+        auto direct = number(1, what);
+        ext.device_modifier = binary_modifier(device_mod);
+        ext.indirect = (device_mod >> 8 & 0x0F) == 0x8;
+        field.spec = form == DeviceForm::Q ? devicemodel::find_by_q_code(static_cast<std::uint8_t>(field.code))
+                                           : devicemodel::find_by_iqr_code(field.code);
+        switch (direct) {
+            case 0x00: ext.kind = DeviceExtension::Kind::None; break;
+            case 0xF9: ext.kind = DeviceExtension::Kind::LinkDirect; break;
+            case 0xF8: ext.kind = DeviceExtension::Kind::ModuleAccess; break;
+            case 0xFA: ext.kind = DeviceExtension::Kind::CpuBuffer; break;
+            default: fail(EndCode::BadRequestContent, what);
+        }
+        if (ext.kind == DeviceExtension::Kind::None && ext.target != 0) fail(EndCode::BadRequestContent, what);
+        return field;
+    }
+    // ASCII: indirect (2) | extension (4) | extension modification (3/4) |
+    // code (2/4) | number (6/10) | device modification (3/4).
+    const std::size_t modifier_width = form == DeviceForm::Q ? 3 : 4;
+    auto indirect = take(2, what);
+    auto extension = take(4, what);
+    ext.target_modifier = ascii_modifier(modifier_width, what);
+    field.spec = ascii_code(take(ascii_code_chars(form), what));
+    field.number = device_number(field.spec, form == DeviceForm::Q ? 6 : 10, what);
+    ext.device_modifier = ascii_modifier(modifier_width, what);
+    if (!ok()) return field;
+    // The manual's figure is unreadable on where "@" sits; accept "@0" and "0@".
+    std::string_view at(reinterpret_cast<const char*>(indirect.data()), 2);
+    ext.indirect = at == "@0" || at == "0@";
+    if (!ext.indirect && at != "00") fail(EndCode::BadRequestContent, what);
+    std::string_view name(reinterpret_cast<const char*>(extension.data()), 4);
+    if (name == "0000") return field;
+    auto value = parse_hex(extension.subspan(1));
+    if (!value || (name[0] != 'J' && name[0] != 'U')) {
+        fail(EndCode::BadRequestContent, what);
+        return field;
+    }
+    ext.target = static_cast<std::uint16_t>(*value);
+    ext.kind = name[0] == 'J' ? DeviceExtension::Kind::LinkDirect
+               : (*value >= 0x3E0 && *value <= 0x3E3) ? DeviceExtension::Kind::CpuBuffer
+                                                      : DeviceExtension::Kind::ModuleAccess;
     return field;
 }
 
@@ -144,14 +243,59 @@ void FieldWriter::device(DeviceForm form, const devicemodel::DeviceAddress& addr
         number(form == DeviceForm::Q ? static_cast<std::uint16_t>(spec.q_code) : spec.iqr_code, code_bytes(form));
         return;
     }
-    for (char c : devicemodel::ascii_name(spec, ascii_code_chars(form))) out_.push_back(static_cast<std::uint8_t>(c));
+    text(devicemodel::ascii_name(spec, ascii_code_chars(form)));
+    device_number(spec, address.number, ascii_number_digits(form));
+}
+
+void FieldWriter::text(std::string_view characters) { out_.insert(out_.end(), characters.begin(), characters.end()); }
+
+void FieldWriter::device_number(const DeviceSpec& spec, std::uint32_t value, std::size_t digits) {
     auto radix = static_cast<std::uint32_t>(ascii_radix(spec, options_));
-    auto digits = ascii_number_digits(form);
-    std::vector<std::uint8_t> text(digits, '0');
-    auto value = address.number;
-    for (std::size_t i = digits; i-- > 0 && value != 0; value /= radix)
-        text[i] = static_cast<std::uint8_t>("0123456789ABCDEF"[value % radix]);
-    out_.insert(out_.end(), text.begin(), text.end());
+    std::string number(digits, '0');
+    for (std::size_t i = digits; i-- > 0 && value != 0; value /= radix) number[i] = "0123456789ABCDEF"[value % radix];
+    text(number);
+}
+
+void FieldWriter::ascii_modifier(const Modifier& modifier, DeviceForm form) {
+    const bool q = form == DeviceForm::Q;
+    if (modifier.reg == Modifier::Register::None) return text(q ? "000" : "0000");
+    std::string digits{static_cast<char>('0' + modifier.number / 10), static_cast<char>('0' + modifier.number % 10)};
+    if (modifier.reg == Modifier::Register::LZ) return text("LZ" + digits);
+    text((q ? "Z" : "Z ") + digits);
+}
+
+void FieldWriter::extended_device(DeviceForm form, const devicemodel::DeviceAddress& address,
+                                  const DeviceExtension& extension) {
+    using Kind = DeviceExtension::Kind;
+    const auto& spec = *address.spec;
+    auto modifier_word = [](const Modifier& m) -> std::uint16_t {
+        std::uint16_t kind = m.reg == Modifier::Register::Z ? 0x40 : m.reg == Modifier::Register::LZ ? 0x80 : 0x00;
+        return static_cast<std::uint16_t>(kind << 8 | m.number);
+    };
+    if (codec_ == Codec::Binary) {
+        number(static_cast<std::uint16_t>(modifier_word(extension.device_modifier) | (extension.indirect ? 0x0800 : 0)), 2);
+        number(address.number, number_bytes(form));
+        number(form == DeviceForm::Q ? static_cast<std::uint16_t>(spec.q_code) : spec.iqr_code, code_bytes(form));
+        number(modifier_word(extension.target_modifier), 2);
+        number(extension.target, 2);
+        std::uint8_t direct = extension.kind == Kind::LinkDirect     ? 0xF9
+                              : extension.kind == Kind::ModuleAccess ? 0xF8
+                              : extension.kind == Kind::CpuBuffer    ? 0xFA
+                                                                     : 0x00;
+        number(direct, 1);
+        return;
+    }
+    text(extension.indirect ? "@0" : "00");
+    if (extension.kind == Kind::None) {
+        text("0000");
+    } else {
+        text(extension.kind == Kind::LinkDirect ? "J" : "U");
+        append_hex(out_, extension.target, 3);
+    }
+    ascii_modifier(extension.target_modifier, form);
+    text(devicemodel::ascii_name(spec, ascii_code_chars(form)));
+    device_number(spec, address.number, form == DeviceForm::Q ? 6 : 10);
+    ascii_modifier(extension.device_modifier, form);
 }
 
 void FieldWriter::bits(std::span<const std::uint8_t> points) {

@@ -29,11 +29,37 @@ struct CodecOptions {
     bool zr_ascii_hex = false;   // number ZR in hex in ASCII frames (the manuals' form)
 };
 
+// An index register that modifies a number: Z0–Z24 (16-bit) or LZ0–LZ12 (32-bit).
+struct Modifier {
+    enum class Register : std::uint8_t { None, Z, LZ };
+    Register reg = Register::None;
+    std::uint8_t number = 0;
+    friend bool operator==(const Modifier&, const Modifier&) = default;
+};
+
+// What the extended forms (008x, Appendix 1) put around a device: which memory
+// it lives in and the index registers that modify it.
+struct DeviceExtension {
+    enum class Kind : std::uint8_t {
+        None,           // a plain device of the CPU
+        LinkDirect,     // J(network)\X/Y/B/SB/W/SW
+        ModuleAccess,   // U(start I/O ÷ 16)\G
+        CpuBuffer,      // U3E0–U3E3\G or \HG
+    };
+    Kind kind = Kind::None;
+    std::uint16_t target = 0;     // network No., start I/O ÷ 16, or 03E0–03E3
+    Modifier target_modifier;     // indexes `target` (0403/1402/0801 only)
+    Modifier device_modifier;     // indexes the device number
+    bool indirect = false;        // "@": the device holds the address of the one meant
+};
+
 // A device as it arrived: `spec` is null when the code is not in the device table.
 struct DeviceField {
     const devicemodel::DeviceSpec* spec = nullptr;
     std::uint32_t number = 0;
-    std::uint16_t code = 0;   // the binary code, or 0 for ASCII
+    std::uint16_t code = 0;       // the binary code, or 0 for ASCII
+    bool extended = false;        // came in the 008x layout
+    DeviceExtension extension;
 };
 
 class FieldReader {
@@ -45,6 +71,9 @@ public:
     std::uint16_t u16(std::string_view what);
     std::uint32_t u32(std::string_view what);
     DeviceField device(DeviceForm form, std::string_view what);
+    // The 008x layout (Appendix 1): binary 11 bytes (Q form) / 13 (iQ-R form),
+    // ASCII 20 / 28 characters with a 10-digit device number in the iQ-R form.
+    DeviceField extended_device(DeviceForm form, std::string_view what);
     // Bit-unit data: one nibble a point (first point high) or one '0'/'1' a point.
     std::vector<std::uint8_t> bits(std::size_t count, std::string_view what);
     std::vector<std::uint16_t> words(std::size_t count, std::string_view what);
@@ -61,6 +90,8 @@ public:
 private:
     std::span<const std::uint8_t> take(std::size_t count, std::string_view what);
     std::uint32_t number(std::size_t bytes, std::string_view what);
+    std::uint32_t device_number(const devicemodel::DeviceSpec* spec, std::size_t digits, std::string_view what);
+    Modifier ascii_modifier(std::size_t width, std::string_view what);
     void fail(EndCode code, std::string_view what);
 
     Codec codec_;
@@ -80,6 +111,8 @@ public:
     void u16(std::uint16_t value) { number(value, 2); }
     void u32(std::uint32_t value) { number(value, 4); }
     void device(DeviceForm form, const devicemodel::DeviceAddress& address);
+    void extended_device(DeviceForm form, const devicemodel::DeviceAddress& address,
+                         const DeviceExtension& extension = {});
     void bits(std::span<const std::uint8_t> points);
     void words(std::span<const std::uint16_t> values);
     void raw(std::span<const std::uint8_t> bytes);
@@ -88,6 +121,9 @@ public:
 
 private:
     void number(std::uint32_t value, std::size_t bytes);
+    void text(std::string_view characters);
+    void device_number(const devicemodel::DeviceSpec& spec, std::uint32_t value, std::size_t digits);
+    void ascii_modifier(const Modifier& modifier, DeviceForm form);
 
     Codec codec_;
     CodecOptions options_;

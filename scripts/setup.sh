@@ -6,7 +6,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build ccache libboost-dev libboost-program-options-dev
-          nlohmann-json3-dev libspdlog-dev catch2)
+          nlohmann-json3-dev libspdlog-dev catch2 python3-jsonschema
+          chromium)   # the web monitor's browser test (tests/browser)
 command -v node >/dev/null 2>&1 || packages+=(nodejs)
 command -v npm >/dev/null 2>&1 || packages+=(npm)
 missing=()
@@ -24,6 +25,13 @@ fi
 if [ -f tests/interop/package.json ] && [ ! -d tests/interop/node_modules ]; then
   echo "setup: installing npm packages for tests/interop"
   (cd tests/interop && npm ci --no-audit --no-fund --loglevel=error)
+fi
+
+# playwright-core for the browser test; it drives Debian's chromium and
+# downloads no browser of its own.
+if [ -f tests/browser/package.json ] && [ ! -d tests/browser/node_modules ]; then
+  echo "setup: installing npm packages for tests/browser"
+  (cd tests/browser && npm ci --no-audit --no-fund --loglevel=error)
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null

@@ -4,7 +4,27 @@
 
 namespace slmp::server {
 
+namespace {
+
+// Remote password and remote operations are logged at info (warn when refused):
+// an operator wants to see who stopped or unlocked the CPU without debug logs.
+bool operator_command(std::uint16_t command) {
+    return command == 0x1001 || command == 0x1002 || command == 0x1003 || command == 0x1005 || command == 0x1006 ||
+           command == 0x1617 || command == 0x1630 || command == 0x1631;
+}
+
+}  // namespace
+
 void log_outcome(const std::string& peer, const protocol::Outcome& outcome) {
+    if (operator_command(outcome.command) && outcome.action != protocol::Outcome::Action::NeedMore) {
+        if (outcome.end_code == protocol::EndCode::Ok && outcome.note.empty())
+            spdlog::info("{} {:04X} ({}) done", peer, outcome.command,
+                         outcome.command == 0x1630 ? "remote password unlock" :
+                         outcome.command == 0x1631 ? "remote password lock" : "remote operation");
+        else
+            spdlog::warn("{} {:04X} refused: {}", peer, outcome.command, outcome.note);
+        return;
+    }
     if (outcome.note.empty()) {
         spdlog::trace("{} {:04X}/{:04X} ok, {} byte(s) in, {} byte(s) out", peer, outcome.command, outcome.subcommand,
                       outcome.consumed, outcome.response.size());

@@ -45,7 +45,14 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("idle-timeout", po::value<double>(), "close a TCP connection silent for this many seconds (default 300; 0 = never)")
         ("max-request-bytes", po::value<std::size_t>(), "largest request frame accepted (default 8192)")
         ("log-level,l", po::value<std::string>(), "trace, debug, info, warn, error or off (default info)")
-        ("ready-file", po::value<std::string>(), "write {\"tcp\":[...],\"udp\":[...],\"pid\":N} here once listening");
+        ("ready-file", po::value<std::string>(), "write {\"tcp\":[...],\"udp\":[...],\"http\":N,\"pid\":N} here once listening")
+        ("http-port", po::value<unsigned>(), "HTTP API, metrics and web monitor port; 0 = any free port (default 8080)")
+        ("http-bind", po::value<std::string>(), "address for the HTTP port (default: the --bind address)")
+        ("no-http", "serve no HTTP API, metrics or web monitor")
+        ("switch", po::value<std::string>(), "the CPU's RUN/STOP switch: RUN (default) or STOP")
+        ("state-dir", po::value<std::string>(), "keep device memory here across restarts (see docs/cpu-runtime.md)")
+        ("scenario", po::value<std::vector<std::string>>(), "run a scenario file (values that move, logic, faults, replay); repeatable (docs/scenarios.md)")
+        ("record", po::value<std::string>(), "record every request and response to this JSON-lines file (docs/scenarios.md)");
 
     po::variables_map vm;
     try {
@@ -100,6 +107,25 @@ CommandLine parse_command_line(int argc, char** argv) {
     }
     if (vm.count("log-level")) c.log_level = vm["log-level"].as<std::string>();
     if (vm.count("ready-file")) c.ready_file = vm["ready-file"].as<std::string>();
+    if (vm.count("http-port")) {
+        auto port = vm["http-port"].as<unsigned>();
+        if (port > 65535) throw ConfigError("--http-port " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
+        c.http.port = static_cast<std::uint16_t>(port);
+        c.http.enabled = true;
+    }
+    if (vm.count("http-bind")) c.http.bind = vm["http-bind"].as<std::string>();
+    if (vm.count("no-http")) {
+        if (vm.count("http-port") || vm.count("http-bind"))
+            throw ConfigError("--no-http contradicts --http-port/--http-bind; give one or the other");
+        c.http.enabled = false;
+    }
+    if (vm.count("switch")) c.cpu.runtime.run_switch = config::parse_run_switch(vm["switch"].as<std::string>(), "--switch");
+    if (vm.count("state-dir")) c.persistence.state_dir = vm["state-dir"].as<std::string>();
+    if (vm.count("scenario")) {
+        auto files = vm["scenario"].as<std::vector<std::string>>();
+        c.scenarios.insert(c.scenarios.end(), files.begin(), files.end());
+    }
+    if (vm.count("record")) c.record_file = vm["record"].as<std::string>();
     if (c.ports.empty()) throw ConfigError("no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
     return cl;
 }

@@ -53,13 +53,28 @@ asio::awaitable<void> TcpListener::accept_loop() {
 
 void TcpListener::session_closed(TcpSession* session) {
     sessions_.erase(session);
-    if (stopping_ || acceptor_.is_open()) return;
+    if (stopping_ || refusing_ || acceptor_.is_open()) return;
+    reopen();
+}
+
+void TcpListener::reopen() {
     try {
         listen();
         spdlog::info("TCP port {}: accepting clients again", port());
     } catch (const std::exception& e) {
         spdlog::error("TCP port {}: cannot listen again: {}", port(), e.what());
     }
+}
+
+void TcpListener::set_refusing(bool refusing) {
+    refusing_ = refusing;
+    boost::system::error_code ec;
+    if (refusing) {
+        acceptor_.close(ec);
+        return;
+    }
+    if (stopping_ || acceptor_.is_open() || sessions_.size() >= config_.max_connections) return;
+    reopen();
 }
 
 void TcpListener::stop() {

@@ -22,9 +22,13 @@ public:
 
     std::uint16_t port() const { return endpoint_.port(); }   // the bound port, also when 0 was asked for
     void stop();
+    // A scenario's power cut or refusal period: while true the port is closed
+    // (clients are refused); afterwards it listens again (scenario_station.hpp).
+    void set_refusing(bool refusing);
 
 private:
     void listen();
+    void reopen();   // listen() again after the port was closed; logs instead of throwing
     boost::asio::awaitable<void> accept_loop();
     void session_closed(TcpSession* session);
 
@@ -35,6 +39,7 @@ private:
     boost::asio::ip::tcp::acceptor acceptor_;
     std::unordered_map<TcpSession*, std::shared_ptr<TcpSession>> sessions_;
     bool stopping_ = false;
+    bool refusing_ = false;
 };
 
 }  // namespace slmp::server

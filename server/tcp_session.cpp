@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "server/outbox.hpp"
+
 namespace slmp::server {
 
 namespace asio = boost::asio;
@@ -30,6 +32,7 @@ TcpSession::TcpSession(asio::ip::tcp::socket socket, Core& core, const config::P
     boost::system::error_code ec;
     auto remote = socket_.remote_endpoint(ec);
     peer_ = ec ? "tcp:?" : "tcp:" + remote.address().to_string() + ":" + std::to_string(remote.port());
+    local_port_ = socket_.local_endpoint(ec).port();
     socket_.set_option(asio::ip::tcp::no_delay(true), ec);
 }
 
@@ -37,6 +40,11 @@ void TcpSession::start() {
     spdlog::info("{} connected (connection {})", peer_, session_.id);
     last_activity_ = std::chrono::steady_clock::now();
     auto self = shared_from_this();
+    std::weak_ptr<TcpSession> weak = self;
+    core_.activity.opened({session_.id, peer_, config::Transport::Tcp, local_port_, std::chrono::system_clock::now(), 0,
+                           [weak](const std::string& why) {
+                               if (auto session = weak.lock()) session->close(why);
+                           }});
     auto log_crash = [self](std::exception_ptr e) {
         if (!e) return;
         try {
@@ -57,53 +65,76 @@ void TcpSession::close() {
     idle_timer_.cancel();
 }
 
+void TcpSession::close(const std::string& why) {
+    close_reason_ = why;
+    close();
+}
+
 void TcpSession::finish(const std::string& why) {
     if (closed_) return;
     closed_ = true;
     close();
     spdlog::info("{} disconnected (connection {}): {}", peer_, session_.id, why);
+    core_.activity.closed(session_.id, why);
     on_closed_(this);
 }
 
 awaitable<void> TcpSession::serve() {
     auto self = shared_from_this();   // keeps the session alive while it serves
     std::vector<std::uint8_t> pending;   // bytes received but not yet a whole frame
-    std::vector<std::uint8_t> replies;
+    Outbox outbox(socket_);   // responses on their way out, as scenarios ask (server/outbox.hpp)
     std::array<std::uint8_t, 8192> chunk;
     for (;;) {
         boost::system::error_code ec;
+        outbox.watch_hold();
         auto n = co_await socket_.async_read_some(asio::buffer(chunk), asio::redirect_error(use_awaitable, ec));
+        if (outbox.hold_expired() && ec == asio::error::operation_aborted) ec = {};   // send what a coalescing hold kept
         if (ec) {
             if (ec != asio::error::eof && ec != asio::error::operation_aborted) close_reason_ = ec.message();
             break;
         }
-        last_activity_ = std::chrono::steady_clock::now();
+        if (n > 0) last_activity_ = std::chrono::steady_clock::now();
         pending.insert(pending.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
 
         // Answer every whole frame now in the buffer, in order, in one write.
         std::size_t offset = 0;
         bool close_after = false;
-        replies.clear();
+        bool restart_after = false;
+        bool reset_after = false;
         while (offset < pending.size()) {
-            auto outcome = core_.engine.process(std::span(pending).subspan(offset), policy_, session_);
+            auto input = std::span<const std::uint8_t>(pending).subspan(offset);
+            core_.activity.request_starting();
+            auto started = std::chrono::steady_clock::now();
+            auto handled = core_.scenario.process(core_.engine, input, policy_, session_, {config::Transport::Tcp, peer_});
+            auto& outcome = handled.outcome;
             if (outcome.action == Outcome::Action::NeedMore) break;
             log_outcome(peer_, outcome);
+            core_.activity.request({session_.id, config::Transport::Tcp, peer_, input.first(outcome.consumed), outcome,
+                                    std::chrono::steady_clock::now() - started});
             offset += outcome.consumed;
-            if (outcome.action == Outcome::Action::Respond)
-                replies.insert(replies.end(), outcome.response.begin(), outcome.response.end());
+            if (outcome.action == Outcome::Action::Respond) outbox.add(std::move(outcome.response), handled.delivery);
             if (outcome.action == Outcome::Action::Close) {
                 close_after = true;
+                reset_after = handled.reset;
                 close_reason_ = outcome.note;
+                break;
+            }
+            if (outcome.action == Outcome::Action::Restart) {   // Remote RESET: no answer; every connection closes
+                close_after = restart_after = true;
+                close_reason_ = "Remote RESET: the CPU restarted";
                 break;
             }
         }
         pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(offset));
-        if (!replies.empty()) {
-            co_await asio::async_write(socket_, asio::buffer(replies), asio::redirect_error(use_awaitable, ec));
-            if (ec) {
-                close_reason_ = "write failed: " + ec.message();
-                break;
-            }
+        co_await outbox.send(ec);
+        if (ec) {
+            close_reason_ = "write failed: " + ec.message();
+            break;
+        }
+        if (restart_after && core_.on_restart) core_.on_restart();
+        if (reset_after) {   // a scenario's "reset": RST instead of FIN (SO_LINGER 0, no shutdown first)
+            socket_.set_option(asio::socket_base::linger(true, 0), ec);
+            socket_.close(ec);
         }
         if (close_after) break;
     }

@@ -23,6 +23,7 @@ public:
 
     void start();
     void close();   // from the server at shutdown, or the watchdog
+    void close(const std::string& why);   // from the HTTP API; `why` is logged
     const std::string& peer() const { return peer_; }
 
 private:
@@ -38,6 +39,7 @@ private:
     boost::asio::steady_timer idle_timer_;
     protocol::Session session_;
     std::string peer_;
+    std::uint16_t local_port_ = 0;
     std::string close_reason_ = "closed by the client";
     std::function<void(TcpSession*)> on_closed_;
     bool closed_ = false;

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "server/tcp_session.hpp"
+#include "server/udp_delivery.hpp"
 
 namespace slmp::server {
 
@@ -38,20 +39,31 @@ asio::awaitable<void> UdpListener::serve() {
             continue;
         }
         auto peer = "udp:" + sender.address().to_string() + ":" + std::to_string(sender.port());
-        auto outcome = core_.engine.process(std::span(datagram.data(), n), policy_, session_);
+        auto input = std::span<const std::uint8_t>(datagram.data(), n);
+        core_.activity.request_starting();
+        auto started = std::chrono::steady_clock::now();
+        auto handled = core_.scenario.process(core_.engine, input, policy_, session_, {config::Transport::Udp, peer});
+        auto& outcome = handled.outcome;
         if (outcome.action == Outcome::Action::NeedMore) {
             spdlog::debug("{} datagram of {} byte(s) holds no whole request frame (check the request data length); "
                           "not answered", peer, n);
             continue;
         }
         log_outcome(peer, outcome);
+        core_.activity.request({session_.id, config::Transport::Udp, peer, input.first(outcome.consumed), outcome,
+                                std::chrono::steady_clock::now() - started});
         if (outcome.consumed < n)
             spdlog::debug("{} {} byte(s) after the request frame ignored", peer, n - outcome.consumed);
+        if (outcome.action == Outcome::Action::Restart && core_.on_restart) core_.on_restart();
         if (outcome.action != Outcome::Action::Respond) continue;
-        co_await socket_.async_send_to(asio::buffer(outcome.response), sender,
-                                       asio::redirect_error(asio::use_awaitable, ec));
+        co_await send_datagrams(socket_, sender, outcome.response, handled.delivery, ec);
         if (ec) spdlog::debug("{} send failed: {}", peer, ec.message());
     }
+}
+
+void UdpListener::restart_session() {
+    session_ = protocol::Session{};
+    session_.id = core_.next_session_id++;
 }
 
 void UdpListener::stop() {

@@ -19,6 +19,9 @@ public:
 
     std::uint16_t port() const { return port_; }
     void stop();
+    // After a Remote RESET: the port's session starts afresh (locked again when
+    // the CPU has a remote password).
+    void restart_session();
 
 private:
     boost::asio::awaitable<void> serve();

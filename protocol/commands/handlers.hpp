@@ -5,14 +5,45 @@
 
 namespace slmp::protocol::commands {
 
-// device_batch.cpp — Read 0401 / Write 1401, subcommands 0000 0001 0002 0003.
+// device_batch.cpp — Read 0401 / Write 1401, subcommands 0000–0003 and 0080–0083.
 EndCode batch_read(CommandContext& ctx);
 EndCode batch_write(CommandContext& ctx);
+
+// device_random.cpp — Read Random 0403, Write Random 1402 (words; bits),
+// Entry Monitor Device 0801, Execute Monitor 0802.
+EndCode random_read(CommandContext& ctx);
+EndCode random_write_words(CommandContext& ctx);
+EndCode random_write_bits(CommandContext& ctx);
+EndCode monitor_register(CommandContext& ctx);
+EndCode monitor_execute(CommandContext& ctx);
+
+// device_block.cpp — Read Block 0406 / Write Block 1406.
+EndCode block_read(CommandContext& ctx);
+EndCode block_write(CommandContext& ctx);
+
+// buffer_memory.cpp — Memory Read/Write 0613/1613, Extend Unit Read/Write 0601/1601.
+EndCode memory_read(CommandContext& ctx);
+EndCode memory_write(CommandContext& ctx);
+EndCode extend_unit_read(CommandContext& ctx);
+EndCode extend_unit_write(CommandContext& ctx);
 
 // cpu_model.cpp — Read Type Name 0101.
 EndCode read_type_name(CommandContext& ctx);
 
 // loopback.cpp — Self Test 0619.
 EndCode self_test(CommandContext& ctx);
+
+// remote.cpp — Remote RUN 1001, STOP 1002, PAUSE 1003, Latch Clear 1005,
+// RESET 1006, and Clear Error 1617 (the same operating-state rules).
+EndCode remote_run(CommandContext& ctx);
+EndCode remote_stop(CommandContext& ctx);
+EndCode remote_pause(CommandContext& ctx);
+EndCode remote_latch_clear(CommandContext& ctx);
+EndCode remote_reset(CommandContext& ctx);
+EndCode clear_error(CommandContext& ctx);
+
+// password.cpp — Remote Password Unlock 1630 / Lock 1631.
+EndCode password_unlock(CommandContext& ctx);
+EndCode password_lock(CommandContext& ctx);
 
 }  // namespace slmp::protocol::commands

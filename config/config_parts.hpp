@@ -1,0 +1,19 @@
+// Pieces of the configuration parser shared by its files (not for other modules).
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "config/config.hpp"
+#include "config/json_path.hpp"
+
+namespace slmp::config {
+
+std::vector<std::pair<devicemodel::Area, std::uint32_t>> parse_device_sizes(const JsonAt& sizes);
+std::vector<InitialValue> parse_initial_values(const JsonAt& devices);
+// "modules", "networks" and "cpus" (hardware_config.cpp).
+void parse_hardware(const JsonAt& root, ServerConfig& config);
+// "cpu", "state_dir", "snapshot_interval_s", "restore" (cpu_config.cpp).
+void parse_cpu_runtime(const JsonAt& root, ServerConfig& config);
+
+}  // namespace slmp::config

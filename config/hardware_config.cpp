@@ -1,0 +1,107 @@
+// What is mounted beside CPU No.1: intelligent function modules (buffer
+// memory), network modules (link devices), and CPU No.2–4 of a multi-CPU
+// system. Keys: docs/configuration.md "Modules, networks and CPUs".
+#include "config/config_parts.hpp"
+
+namespace slmp::config {
+
+using devicemodel::Area;
+
+namespace {
+
+// A 4-hex-digit start I/O number such as "0030"; the module is U3.
+std::uint16_t io_number(const JsonAt& at) {
+    auto text = at.string();
+    bool hex = !text.empty() && text.size() <= 4 && text.find_first_not_of("0123456789ABCDEFabcdef") == std::string::npos;
+    if (!hex) at.fail("'" + text + "' is not a start I/O number", "write 4 hex digits, e.g. \"0030\"");
+    auto value = std::stoul(text, nullptr, 16);
+    if (value % 16 != 0) at.fail("start I/O " + text + " is not a multiple of 10H", "use e.g. \"0030\"");
+    return static_cast<std::uint16_t>(value / 16);
+}
+
+std::uint32_t hex_number(const JsonAt& at) {
+    auto text = at.string();
+    bool hex = !text.empty() && text.size() <= 8 && text.find_first_not_of("0123456789ABCDEFabcdef") == std::string::npos;
+    if (!hex) at.fail("'" + text + "' is not a hexadecimal address", "write hex digits, e.g. \"1008\"");
+    return static_cast<std::uint32_t>(std::stoul(text, nullptr, 16));
+}
+
+ModuleConfig module(const JsonAt& at) {
+    at.only_keys({"start_io", "model", "buffer_words", "head_address"});
+    ModuleConfig m;
+    m.io_number = io_number(at["start_io"]);
+    if (at.has("model")) m.model = at["model"].string();
+    m.buffer_words = static_cast<std::uint32_t>(at["buffer_words"].unsigned_int(16 * 1024 * 1024));
+    if (at.has("head_address")) m.head_address = hex_number(at["head_address"]);
+    return m;
+}
+
+// Link device sizes of a CC-Link IE Control network module unless given.
+NetworkConfig network(const JsonAt& at) {
+    at.only_keys({"number", "device_sizes"});
+    NetworkConfig n;
+    n.number = static_cast<std::uint16_t>(at["number"].unsigned_int(239));
+    if (n.number == 0) at["number"].fail("network numbers start at 1", "use 1-239");
+    auto set = [&](Area a, std::uint32_t points) { n.sizes[static_cast<std::size_t>(a)] = points; };
+    set(Area::X, 16384);
+    set(Area::Y, 16384);
+    set(Area::B, 32768);
+    set(Area::SB, 512);
+    set(Area::W, 131072);
+    set(Area::SW, 512);
+    if (at.has("device_sizes"))
+        for (auto [area, points] : parse_device_sizes(at["device_sizes"])) {
+            if (area != Area::X && area != Area::Y && area != Area::B && area != Area::SB && area != Area::W &&
+                area != Area::SW)
+                at["device_sizes"].fail("a network module has only X, Y, B, SB, W and SW", "remove the other devices");
+            set(area, points);
+        }
+    return n;
+}
+
+CpuConfig cpu(const JsonAt& at) {
+    at.only_keys({"number", "profile", "device_sizes", "devices"});
+    CpuConfig c;
+    c.number = static_cast<int>(at["number"].unsigned_int(4));
+    if (c.number < 2) at["number"].fail("CPU No.1 is the one configured at the top level", "use 2, 3 or 4");
+    c.profile = at["profile"].string();
+    if (at.has("device_sizes")) c.device_sizes = parse_device_sizes(at["device_sizes"]);
+    if (at.has("devices")) c.devices = parse_initial_values(at["devices"]);
+    return c;
+}
+
+template <typename T, typename Parse>
+std::vector<T> list(const JsonAt& root, std::string_view key, Parse parse) {
+    std::vector<T> items;
+    if (!root.has(key)) return items;
+    auto array = root[key];
+    array.expect_array();
+    for (std::size_t i = 0; i < array.json().size(); ++i) items.push_back(parse(array[i]));
+    return items;
+}
+
+}  // namespace
+
+void parse_hardware(const JsonAt& root, ServerConfig& config) {
+    config.modules = list<ModuleConfig>(root, "modules", module);
+    config.networks = list<NetworkConfig>(root, "networks", network);
+    config.cpus = list<CpuConfig>(root, "cpus", cpu);
+    for (std::size_t i = 0; i < config.cpus.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (config.cpus[i].number == config.cpus[j].number)
+                root["cpus"][i]["number"].fail("CPU No." + std::to_string(config.cpus[i].number) + " is configured twice",
+                                               "give each CPU its own number");
+}
+
+void attach_hardware(devicemodel::Cpu& cpu, const ServerConfig& config) {
+    for (const auto& m : config.modules) cpu.add_module(m.io_number, m.model, m.buffer_words, m.head_address);
+    for (const auto& n : config.networks) cpu.add_network(n.number, n.sizes);
+}
+
+devicemodel::CpuProfile resolve_profile(const CpuConfig& cpu) {
+    auto profile = load_profile(cpu.profile);
+    for (const auto& [area, points] : cpu.device_sizes) profile.sizes[static_cast<std::size_t>(area)] = points;
+    return profile;
+}
+
+}  // namespace slmp::config

@@ -1,0 +1,90 @@
+// A CPU that runs: the operating state, the scan cycle, timers and counters,
+// the special relays/registers, the remote password and the latch rules, over
+// one DeviceMemory. Time comes from outside (scan(now)): the server passes the
+// steady clock, tests pass a fake one, so everything here is deterministic.
+//
+// Requests are served between scans (the real CPU serves them at END
+// processing), so a remote RUN/STOP/PAUSE takes effect at a scan boundary and
+// SD203 shows it at once. Behaviour and the simulated SM/SD list:
+// docs/cpu-runtime.md.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "devicemodel/cpu_profile.hpp"
+#include "devicemodel/device_clear.hpp"
+#include "devicemodel/device_memory.hpp"
+#include "devicemodel/operating_state.hpp"
+#include "devicemodel/remote_password.hpp"
+#include "devicemodel/runtime_config.hpp"
+#include "devicemodel/special_registers.hpp"
+#include "devicemodel/timers.hpp"
+
+namespace slmp::devicemodel {
+
+// Remote RUN clear modes (§5.2): 00 none, 01 outside the latch range, 02 all.
+enum class ClearMode : std::uint8_t { None = 0, NonLatched = 1, All = 2 };
+
+class Runtime {
+public:
+    using TimePoint = std::chrono::steady_clock::time_point;
+
+    explicit Runtime(Family family = Family::IQR) : family_(family) {}
+
+    // Applies a configuration and powers the CPU on (state from the switch).
+    void configure(RuntimeConfig config, DeviceMemory& memory);
+    const RuntimeConfig& config() const { return config_; }
+    // Re-applied after every device clear and restart, as the CPU's "device
+    // initial values" parameter is (§5.2).
+    void set_initial_values(std::function<void(DeviceMemory&)> apply) { initial_values_ = std::move(apply); }
+
+    // One scan at time `now` (steady) with the wall-clock calendar.
+    void scan(DeviceMemory& memory, TimePoint now, const CalendarTime& calendar);
+    TimePoint now() const { return last_scan_; }
+
+    RunState state() const { return state_.state(); }
+    const OperatingState& operating_state() const { return state_; }
+    const LatchMap& latch() const { return latch_; }
+    RemotePassword& password() { return password_; }
+
+    RemoteRefusal remote_run(DeviceMemory& memory, ClientId client, bool forced, ClearMode clear);
+    RemoteRefusal remote_stop(DeviceMemory& memory, ClientId client);
+    RemoteRefusal remote_pause(DeviceMemory& memory, ClientId client, bool forced);
+    RemoteRefusal latch_clear(DeviceMemory& memory, ClientId client);
+    // Remote RESET: on success the CPU has restarted (non-latched devices
+    // cleared, hold and error erased, state from the switch).
+    RemoteRefusal reset(DeviceMemory& memory);
+    RemoteRefusal clear_error(DeviceMemory& memory);
+    void set_switch(DeviceMemory& memory, RunSwitch position);
+    void raise_error(DeviceMemory& memory, CpuError error);
+
+    // A power cycle (also the end of a Remote RESET): clears what a power cycle
+    // clears and starts from the switch.
+    void restart(DeviceMemory& memory);
+
+private:
+    template <typename Change>
+    RemoteRefusal change(DeviceMemory& memory, Change&& operation);
+    void settle(DeviceMemory& memory, RunState before);
+    void power_on(DeviceMemory& memory);
+    void clear(DeviceMemory& memory, ClearScope scope);
+
+    Family family_;
+    RuntimeConfig config_;
+    OperatingState state_;
+    LatchMap latch_;
+    TimerBank timers_;
+    RemotePassword password_;
+    std::function<void(DeviceMemory&)> initial_values_;
+
+    bool clock_started_ = false;
+    TimePoint power_on_{};
+    TimePoint last_scan_{};
+    bool first_scan_ = false;
+    std::optional<std::chrono::microseconds> scan_min_, scan_max_;
+};
+
+}  // namespace slmp::devicemodel

@@ -1,0 +1,200 @@
+#include "devicemodel/snapshot.hpp"
+
+#include <cstring>
+#include <optional>
+
+namespace slmp::devicemodel {
+namespace {
+
+constexpr char kMagic[8] = {'S', 'L', 'M', 'P', 'S', 'N', 'A', 'P'};
+constexpr std::uint32_t kVersion = 1;
+
+std::uint64_t fnv1a(std::span<const std::uint8_t> bytes) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (auto b : bytes) {
+        h ^= b;
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
+bool saved(Area area) { return area != Area::SM && area != Area::SD && area != Area::R; }   // R lives in ZR
+
+class Writer {
+public:
+    void u8(std::uint8_t v) { out.push_back(v); }
+    void u32(std::uint32_t v) {
+        for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    }
+    void u64(std::uint64_t v) {
+        for (int i = 0; i < 8; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    }
+    void name(std::string_view s) {
+        u8(static_cast<std::uint8_t>(s.size()));
+        out.insert(out.end(), s.begin(), s.end());
+    }
+    std::vector<std::uint8_t> out;
+};
+
+class Reader {
+public:
+    explicit Reader(std::span<const std::uint8_t> in) : in_(in) {}
+    std::optional<std::uint32_t> u32() {
+        if (in_.size() - pos_ < 4) return std::nullopt;
+        std::uint32_t v = 0;
+        for (int i = 0; i < 4; ++i) v |= std::uint32_t{in_[pos_ + i]} << (8 * i);
+        pos_ += 4;
+        return v;
+    }
+    std::optional<std::uint8_t> u8() {
+        if (pos_ >= in_.size()) return std::nullopt;
+        return in_[pos_++];
+    }
+    std::optional<std::string> name() {
+        auto n = u8();
+        if (!n || in_.size() - pos_ < *n) return std::nullopt;
+        std::string s(in_.begin() + static_cast<std::ptrdiff_t>(pos_), in_.begin() + static_cast<std::ptrdiff_t>(pos_ + *n));
+        pos_ += *n;
+        return s;
+    }
+    bool done() const { return pos_ == in_.size(); }
+
+private:
+    std::span<const std::uint8_t> in_;
+    std::size_t pos_ = 0;
+};
+
+// Zero runs and literal runs: device memory is mostly zeros.
+void write_values(Writer& w, const std::vector<std::uint32_t>& values) {
+    std::size_t i = 0;
+    while (i < values.size()) {
+        std::size_t zeros = 0;
+        while (i + zeros < values.size() && values[i + zeros] == 0) ++zeros;
+        std::size_t literals = 0;
+        while (i + zeros + literals < values.size() && values[i + zeros + literals] != 0) ++literals;
+        w.u32(static_cast<std::uint32_t>(zeros));
+        w.u32(static_cast<std::uint32_t>(literals));
+        for (std::size_t k = 0; k < literals; ++k) w.u32(values[i + zeros + k]);
+        i += zeros + literals;
+    }
+}
+
+std::optional<std::vector<std::uint32_t>> read_values(Reader& r, std::uint32_t size) {
+    std::vector<std::uint32_t> values;
+    values.reserve(size);
+    while (values.size() < size) {
+        auto zeros = r.u32();
+        auto literals = r.u32();
+        if (!zeros || !literals || std::uint64_t{*zeros} + *literals > size - values.size()) return std::nullopt;
+        values.insert(values.end(), *zeros, 0);
+        for (std::uint32_t k = 0; k < *literals; ++k) {
+            auto v = r.u32();
+            if (!v) return std::nullopt;
+            values.push_back(*v);
+        }
+    }
+    return values;
+}
+
+struct SavedPart {
+    const DeviceSpec* spec;
+    std::vector<std::uint32_t> values;
+};
+struct SavedArea {
+    Area area;
+    std::uint32_t size;
+    std::vector<SavedPart> parts;
+};
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::string_view profile_name) {
+    Writer w;
+    w.out.insert(w.out.end(), std::begin(kMagic), std::end(kMagic));
+    w.u32(kVersion);
+    w.name(profile_name);
+    std::vector<Area> areas;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(Area::Count); ++i)
+        if (saved(static_cast<Area>(i))) areas.push_back(static_cast<Area>(i));
+    w.u32(static_cast<std::uint32_t>(areas.size()));
+    for (auto area : areas) {
+        auto size = area == Area::ZR ? std::max(memory.size(Area::ZR), memory.size(Area::R)) : memory.size(area);
+        auto parts = stored_parts(area);
+        w.name(area_name(area));
+        w.u32(size);
+        w.u8(static_cast<std::uint8_t>(parts.size()));
+        for (const auto* part : parts) {
+            w.u8(static_cast<std::uint8_t>(part->part));
+            std::vector<std::uint32_t> values(size);
+            for (std::uint32_t n = 0; n < size; ++n) values[n] = memory.value(*part, n);
+            write_values(w, values);
+        }
+    }
+    w.u64(fnv1a(w.out));
+    return std::move(w.out);
+}
+
+RestoreResult restore_snapshot(std::span<const std::uint8_t> bytes, DeviceMemory& memory, std::string_view profile_name,
+                               const LatchMap& latch, RestoreScope scope) {
+    RestoreResult result;
+    auto fail = [&](std::string why) {
+        result.error = std::move(why);
+        return result;
+    };
+    if (bytes.size() < sizeof kMagic + 12 || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+        return fail("not a slmp-sim snapshot (bad magic)");
+    std::uint64_t stored = 0;
+    for (int i = 0; i < 8; ++i) stored |= std::uint64_t{bytes[bytes.size() - 8 + static_cast<std::size_t>(i)]} << (8 * i);
+    auto body = bytes.first(bytes.size() - 8);
+    if (fnv1a(body) != stored) return fail("checksum mismatch (the file is damaged)");
+
+    Reader r(body.subspan(sizeof kMagic));
+    auto version = r.u32();
+    if (!version || *version != kVersion) return fail("unsupported snapshot version");
+    auto profile = r.name();
+    if (!profile) return fail("truncated header");
+    if (*profile != profile_name)
+        return fail("it was saved by profile " + *profile + ", not " + std::string(profile_name));
+    auto count = r.u32();
+    if (!count) return fail("truncated header");
+
+    // Decode everything before touching memory: a bad file changes nothing.
+    std::vector<SavedArea> areas;
+    for (std::uint32_t a = 0; a < *count; ++a) {
+        auto name = r.name();
+        auto size = r.u32();
+        auto parts = r.u8();
+        if (!name || !size || !parts) return fail("truncated area header");
+        auto area = area_by_name(*name);
+        SavedArea saved_area{area.value_or(Area::Count), *size, {}};
+        for (std::uint8_t p = 0; p < *parts; ++p) {
+            auto part = r.u8();
+            if (!part) return fail("truncated part header");
+            auto values = read_values(r, *size);
+            if (!values) return fail("truncated values of " + *name);
+            const DeviceSpec* spec = nullptr;
+            if (area)
+                for (const auto* s : stored_parts(*area))
+                    if (static_cast<std::uint8_t>(s->part) == *part) spec = s;
+            if (spec) saved_area.parts.push_back({spec, std::move(*values)});
+        }
+        if (!area) result.warnings.push_back("device area " + *name + " is unknown to this version; skipped");
+        else areas.push_back(std::move(saved_area));
+    }
+    if (!r.done()) return fail("unexpected bytes after the last area");
+
+    for (const auto& a : areas) {
+        auto size = a.area == Area::ZR ? std::max(memory.size(Area::ZR), memory.size(Area::R)) : memory.size(a.area);
+        if (size != a.size)
+            result.warnings.push_back(std::string(area_name(a.area)) + " was saved with " + std::to_string(a.size) +
+                                      " points and is now " + std::to_string(size) + "; the common part was restored");
+        auto n_max = std::min(size, a.size);
+        for (const auto& part : a.parts)
+            for (std::uint32_t n = 0; n < n_max; ++n)
+                if (scope == RestoreScope::All || latch.latched(a.area, n)) memory.set_value(*part.spec, n, part.values[n]);
+    }
+    result.ok = true;
+    return result;
+}
+
+}  // namespace slmp::devicemodel

@@ -1,0 +1,42 @@
+// Device memory as bytes, for the state directory (the file handling is the
+// server's). A snapshot holds every stored device except SM/SD (the system
+// rebuilds those) and ends with a checksum, so a damaged file is recognised
+// and refused rather than half-loaded. Remote-operation state is not saved: a
+// power cycle erases it on the real CPU (slmp-labels-remote-misc.md §5.1).
+//
+// Layout (all integers little-endian):
+//   "SLMPSNAP" u32 version(1) | u8 n + profile name | u32 areas
+//   per area: u8 n + area name ("D", "T", ...) | u32 size | u8 parts
+//     per part: u8 part | runs of (u32 zeros, u32 literals, literals × u32) covering size
+//   u64 FNV-1a of everything before it
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "devicemodel/device_clear.hpp"
+#include "devicemodel/device_memory.hpp"
+
+namespace slmp::devicemodel {
+
+std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::string_view profile_name);
+
+enum class RestoreScope : std::uint8_t {
+    Latched,   // like a power cycle: only latched devices (L, R/ZR, latch ranges) come back
+    All,       // every device as it was saved
+};
+
+struct RestoreResult {
+    bool ok = false;
+    std::string error;                   // why nothing was restored
+    std::vector<std::string> warnings;   // e.g. an area whose size changed (the common part was restored)
+};
+
+// Checks the whole snapshot first; on any damage restores nothing.
+RestoreResult restore_snapshot(std::span<const std::uint8_t> bytes, DeviceMemory& memory,
+                               std::string_view profile_name, const LatchMap& latch, RestoreScope scope);
+
+}  // namespace slmp::devicemodel

@@ -1,0 +1,84 @@
+// Remote Control — slmp-labels-remote-misc.md §5, hardware-behaviour.md §2.
+//   1001 Remote RUN    mode (word: 0001 normal, 0003 forced), clear mode (byte: 00/01/02), fixed byte 00
+//   1002 Remote STOP   fixed word 0001
+//   1003 Remote PAUSE  mode (word: 0001 / 0003)
+//   1005 Remote Latch Clear  fixed word 0001
+//   1006 Remote RESET  fixed word 0001; on success no response at all
+// Check order: field layout and length (C061) first, then field values (C05C),
+// then the operating-state rules of devicemodel::OperatingState. The state
+// rules' end codes where the manuals are silent are chosen (docs/cpu-runtime.md):
+// held by another client 4015, not in STOP 4013 (real, for latch clear),
+// reset disabled 4014, a stop error pending C05F.
+#include "protocol/commands/handlers.hpp"
+
+namespace slmp::protocol::commands {
+namespace {
+
+using devicemodel::ClearMode;
+using devicemodel::RemoteRefusal;
+
+EndCode end_code_for(RemoteRefusal refusal) {
+    switch (refusal) {
+        case RemoteRefusal::None: return EndCode::Ok;
+        case RemoteRefusal::HeldByOther: return EndCode::RemoteHeldByOther;
+        case RemoteRefusal::NotInStop: return EndCode::LatchClearNotInStop;
+        case RemoteRefusal::ResetDisabled: return EndCode::RemoteResetDisabled;
+        case RemoteRefusal::StopError: return EndCode::NotExecutableOnCpu;
+    }
+    return EndCode::NotExecutableOnCpu;
+}
+
+constexpr std::uint16_t kNormal = 0x0001;
+constexpr std::uint16_t kForced = 0x0003;
+
+// The trailing "fixed value 0001" of 1002/1005/1006 ([ext] iQ-R MC manual).
+bool fixed_word_only(FieldReader& in) {
+    auto fixed = in.u16("fixed value 0001");
+    return in.finish() && fixed == 0x0001;
+}
+
+}  // namespace
+
+EndCode remote_run(CommandContext& ctx) {
+    auto mode = ctx.in.u16("mode");
+    auto clear = ctx.in.u8("clear mode");
+    auto fixed = ctx.in.u8("fixed value 00");
+    if (!ctx.in.finish()) return ctx.in.error();
+    if ((mode != kNormal && mode != kForced) || clear > 2 || fixed != 0) return EndCode::BadRequestContent;
+    auto& cpu = ctx.cpu;
+    return end_code_for(
+        cpu.runtime().remote_run(cpu.memory(), ctx.session.id, mode == kForced, static_cast<ClearMode>(clear)));
+}
+
+EndCode remote_stop(CommandContext& ctx) {
+    if (!fixed_word_only(ctx.in)) return ctx.in.ok() ? EndCode::BadRequestContent : ctx.in.error();
+    return end_code_for(ctx.cpu.runtime().remote_stop(ctx.cpu.memory(), ctx.session.id));
+}
+
+EndCode remote_pause(CommandContext& ctx) {
+    auto mode = ctx.in.u16("mode");
+    if (!ctx.in.finish()) return ctx.in.error();
+    if (mode != kNormal && mode != kForced) return EndCode::BadRequestContent;
+    return end_code_for(ctx.cpu.runtime().remote_pause(ctx.cpu.memory(), ctx.session.id, mode == kForced));
+}
+
+EndCode remote_latch_clear(CommandContext& ctx) {
+    if (!fixed_word_only(ctx.in)) return ctx.in.ok() ? EndCode::BadRequestContent : ctx.in.error();
+    return end_code_for(ctx.cpu.runtime().latch_clear(ctx.cpu.memory(), ctx.session.id));
+}
+
+EndCode remote_reset(CommandContext& ctx) {
+    if (!fixed_word_only(ctx.in)) return ctx.in.ok() ? EndCode::BadRequestContent : ctx.in.error();
+    auto code = end_code_for(ctx.cpu.runtime().reset(ctx.cpu.memory()));
+    ctx.restarted = code == EndCode::Ok;
+    return code;
+}
+
+// Clear Error 1617 — §8: initialises the error code (SD0, SM0/SM1). A stop
+// error is what stopped the CPU and needs a Remote RESET: C05F (chosen).
+EndCode clear_error(CommandContext& ctx) {
+    if (!ctx.in.finish()) return ctx.in.error();
+    return end_code_for(ctx.cpu.runtime().clear_error(ctx.cpu.memory()));
+}
+
+}  // namespace slmp::protocol::commands

@@ -1,0 +1,19 @@
+// An error response: the end code, then the error information — the
+// responding station's route and the failed request's command and
+// subcommand (slmp-frames-and-devices.md §3.2.4; hardware-behaviour.md §1).
+// Used by the engine and by scenario faults that force an end code, so both
+// send the same bytes.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "protocol/end_code.hpp"
+#include "protocol/frame.hpp"
+
+namespace slmp::protocol {
+
+std::vector<std::uint8_t> encode_error_response(const FrameHeader& request, std::uint16_t command,
+                                                std::uint16_t subcommand, EndCode code);
+
+}  // namespace slmp::protocol

@@ -1,0 +1,41 @@
+// Pieces of the scenario loader shared by its files (not for other modules).
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "config/json_path.hpp"
+#include "scenarios/scenario.hpp"
+
+namespace slmp::scenarios::load {
+
+using config::JsonAt;
+
+// A number within [min, max]; `fix` tells how to write a good one.
+double number(const JsonAt& at, double min, double max, std::string_view fix);
+// Milliseconds: a number from 0 to one day.
+double millis(const JsonAt& at);
+// A probability from 0 to 1.
+double probability(const JsonAt& at);
+
+devicemodel::DeviceAddress address(const JsonAt& at);
+// The sibling key "as" of `owner` for a device: int16 (default), int32, float.
+ValueFormat value_format(const JsonAt& owner, const devicemodel::DeviceAddress& device);
+// "D100" with the sibling key "as" ("int16", "int32", "float") of `owner`.
+DeviceRef device(const JsonAt& at, const JsonAt& owner);
+// "D100-D199", "X0-X1F" or a single "D100"; or a list of them.
+std::vector<DeviceRange> ranges(const JsonAt& at);
+// "0401" or ["0401", "1401"].
+std::vector<std::uint16_t> codes(const JsonAt& at);
+// "RUN" / "STOP".
+devicemodel::RunSwitch run_switch(const JsonAt& at);
+// {"code": "3100", "stop": true}
+devicemodel::CpuError cpu_error(const JsonAt& at);
+// "read" / "write"
+Access access(const JsonAt& at);
+
+Timeline timeline(const JsonAt& at);
+std::vector<Trigger> triggers(const JsonAt& at);
+std::vector<Fault> faults(const JsonAt& at);
+
+}  // namespace slmp::scenarios::load

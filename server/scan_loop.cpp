@@ -1,0 +1,54 @@
+#include "server/scan_loop.hpp"
+
+#include <ctime>
+
+#include <spdlog/spdlog.h>
+
+namespace slmp::server {
+
+namespace asio = boost::asio;
+
+devicemodel::CalendarTime local_calendar(std::chrono::system_clock::time_point now) {
+    auto t = std::chrono::system_clock::to_time_t(now);
+    std::tm tm{};
+    localtime_r(&t, &tm);
+    return {tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, tm.tm_wday};
+}
+
+ScanLoop::ScanLoop(asio::io_context& io, std::vector<devicemodel::Cpu*> cpus, std::chrono::milliseconds period)
+    : timer_(io), cpus_(std::move(cpus)), period_(period) {}
+
+void ScanLoop::start() {
+    asio::co_spawn(timer_.get_executor(), run(), [](std::exception_ptr e) {
+        if (!e) return;
+        try {
+            std::rethrow_exception(e);
+        } catch (const std::exception& ex) {
+            spdlog::error("scan cycle stopped: {}", ex.what());
+        }
+    });
+}
+
+void ScanLoop::stop() {
+    stopped_ = true;
+    timer_.cancel();
+}
+
+asio::awaitable<void> ScanLoop::run() {
+    auto next = std::chrono::steady_clock::now();
+    while (!stopped_) {
+        auto now = std::chrono::steady_clock::now();
+        auto calendar = local_calendar(std::chrono::system_clock::now());
+        for (auto* cpu : cpus_) cpu->runtime().scan(cpu->memory(), now, calendar);
+        if (after_scan_) after_scan_(now);
+        // A fixed cadence; after a stall (a long request, a suspended process)
+        // the next scan starts at once instead of catching up scan by scan.
+        next += period_;
+        if (next < now) next = now;
+        timer_.expires_at(next);
+        boost::system::error_code ec;
+        co_await timer_.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+    }
+}
+
+}  // namespace slmp::server

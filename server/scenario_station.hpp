@@ -1,0 +1,40 @@
+// What scenarios do to the station around the CPU (scenarios::Station): a
+// power cut drops every TCP connection and closes the TCP ports (UDP requests
+// go unanswered meanwhile, decided in the scenario runner); a refusal period
+// closes the TCP ports only. A port opens again when neither holds.
+//
+// Fidelity note: a powered-off PLC does not answer a TCP SYN at all (the
+// client's connect times out); a closed port answers it with RST (connection
+// refused at once). The simulator can only do the latter without raw sockets.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "scenarios/runner.hpp"
+#include "server/core.hpp"
+#include "server/tcp_listener.hpp"
+#include "server/udp_listener.hpp"
+
+namespace slmp::server {
+
+class ScenarioStation : public scenarios::Station {
+public:
+    ScenarioStation(Core& core, std::vector<std::unique_ptr<TcpListener>>& tcp, std::vector<std::unique_ptr<UdpListener>>& udp)
+        : core_(core), tcp_(tcp), udp_(udp) {}
+
+    void power_off() override;
+    void power_on() override;
+    void refuse_connections(bool refuse) override;
+
+private:
+    void update_ports();
+
+    Core& core_;
+    std::vector<std::unique_ptr<TcpListener>>& tcp_;
+    std::vector<std::unique_ptr<UdpListener>>& udp_;
+    bool off_ = false;
+    bool refusing_ = false;
+};
+
+}  // namespace slmp::server

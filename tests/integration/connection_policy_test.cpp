@@ -1,0 +1,158 @@
+// TCP connection policies of the real server: idle timeout, connection limit,
+// oversized length field. Waits are generous upper bounds only.
+#include <catch2/catch.hpp>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+
+#include "frames.hpp"
+#include "link.hpp"
+#include "sim_process.hpp"
+#include "sockets.hpp"
+
+using namespace slmp::test;
+namespace client = slmp::protocol::client;
+using namespace std::chrono_literals;
+
+namespace {
+
+const Wire kBin3{FrameKind::E3, Codec::Binary, 0};
+
+Bytes loopback_request(const std::string& data) {
+    Bytes body = hex("10 00 19 06 00 00");
+    body.push_back(static_cast<std::uint8_t>(data.size()));
+    body.push_back(0);
+    body = concat({body, text(data)});
+    return request_frame(kBin3, body);
+}
+Bytes loopback_response(const std::string& data) {
+    Bytes count = {static_cast<std::uint8_t>(data.size()), 0};
+    return expected_response(kBin3, concat({count, text(data)}));
+}
+
+// One loopback round trip on `c`; true when the exact answer came back.
+bool serves(TcpClient& c, const std::string& data = "PING") {
+    if (!c.send(loopback_request(data))) return false;
+    Bytes frame;
+    if (!c.response(&frame)) return false;
+    return frame == loopback_response(data);
+}
+
+}  // namespace
+
+TEST_CASE("Idle timeout: a silent connection is closed by the server", "[policy][tcp][idle]") {
+    SimProcess sim(with_args({"--idle-timeout", "0.3"}));
+    auto silent = TcpClient::open(sim.tcp_port());
+    auto started = std::chrono::steady_clock::now();
+    Bytes unexpected;
+    CHECK(silent.wait_closed(5s, &unexpected));
+    CHECK(show(unexpected) == show(Bytes{}));
+    // Not before the timeout (generous lower margin for timer granularity).
+    CHECK(std::chrono::steady_clock::now() - started >= 200ms);
+
+    // A connection that keeps talking is served across several timeout periods' worth of requests
+    // as long as each gap is shorter than the timeout, and then closed once it goes silent.
+    auto busy = TcpClient::open(sim.tcp_port());
+    for (int i = 0; i < 5; ++i) {
+        CHECK(serves(busy));
+        std::this_thread::sleep_for(50ms);
+    }
+    CHECK(busy.wait_closed(5s));
+}
+
+TEST_CASE("Idle timeout 0 never closes a connection", "[policy][tcp][idle]") {
+    SimProcess sim(with_args({"--idle-timeout", "0"}));
+    auto c = TcpClient::open(sim.tcp_port());
+    // Nothing arrives and the connection is not closed for a while...
+    auto got = c.recv_some(700ms);
+    CHECK(got.status == RecvStatus::Timeout);
+    // ...and it still serves.
+    CHECK(serves(c));
+}
+
+TEST_CASE("Connection limit: a second client is refused until the first leaves", "[policy][tcp][limit]") {
+    SimProcess sim(with_args({"--max-connections", "1"}));
+    auto first = TcpClient::open(sim.tcp_port());
+    REQUIRE(serves(first));   // the server has accepted it
+
+    int error = 0;
+    auto second = TcpClient::connect(sim.tcp_port(), &error);
+    CHECK_FALSE(second.has_value());
+    CHECK(error == ECONNREFUSED);
+    INFO("connect error: " << std::strerror(error));
+
+    // The first client still works while the second is refused.
+    CHECK(serves(first, "STILL"));
+
+    first.close();
+    auto third = connect_with_retry(sim.tcp_port(), 5s);
+    REQUIRE(third.has_value());
+    CHECK(serves(*third, "AGAIN"));
+
+    // With the new client in, the port is closed again.
+    auto fourth = TcpClient::connect(sim.tcp_port(), &error);
+    CHECK_FALSE(fourth.has_value());
+    CHECK(error == ECONNREFUSED);
+}
+
+TEST_CASE("Connection limit counts per port", "[policy][tcp][limit]") {
+    auto options = with_args({"--max-connections", "1"});
+    options.tcp_ports = 2;
+    SimProcess sim(options);
+    REQUIRE(sim.tcp_ports().size() == 2);
+    auto a = TcpClient::open(sim.tcp_port(0));
+    REQUIRE(serves(a));
+    auto b = TcpClient::open(sim.tcp_port(1));
+    CHECK(serves(b));
+}
+
+TEST_CASE("A length field over the max-request-bytes limit closes the connection and others are still served",
+          "[policy][tcp][limits]") {
+    SimProcess sim(with_args({"--max-request-bytes", "64"}));
+    // Binary 3E header announcing 1000 bytes.
+    {
+        auto c = TcpClient::open(sim.tcp_port());
+        REQUIRE(c.send(hex("50 00 00 FF FF 03 00 E8 03 10 00 01 04 00 00")));
+        Bytes unexpected;
+        CHECK(c.wait_closed(5s, &unexpected));
+        CHECK(show(unexpected) == show(Bytes{}));
+    }
+    // ASCII 3E header announcing 0xFFFF characters.
+    {
+        auto c = TcpClient::open(sim.tcp_port());
+        REQUIRE(c.send(text("500000FF03FF00FFFF0010")));
+        Bytes unexpected;
+        CHECK(c.wait_closed(5s, &unexpected));
+        CHECK(show(unexpected) == show(Bytes{}));
+    }
+    // A request within the limit on a new connection is served.
+    auto fresh = TcpClient::open(sim.tcp_port());
+    CHECK(serves(fresh));
+}
+
+TEST_CASE("An oversized length field with the default limit closes the connection", "[policy][tcp][limits]") {
+    SimProcess sim;
+    auto bystander = TcpClient::open(sim.tcp_port());
+    REQUIRE(serves(bystander));
+    {
+        auto c = TcpClient::open(sim.tcp_port());
+        REQUIRE(c.send(hex("54 00 01 00 00 00 00 FF FF 03 00 FF FF")));   // 4E, 65535 bytes
+        CHECK(c.wait_closed(5s));
+    }
+    // Neither the server nor other connections are affected.
+    CHECK(serves(bystander, "OTHER"));
+    auto fresh = TcpClient::open(sim.tcp_port());
+    CHECK(serves(fresh));
+}
+
+TEST_CASE("A client that disconnects mid-frame does not disturb the server", "[policy][tcp]") {
+    SimProcess sim;
+    {
+        auto c = TcpClient::open(sim.tcp_port());
+        auto request = loopback_request("HALF");
+        REQUIRE(c.send(Bytes(request.begin(), request.begin() + 10)));
+    }
+    auto c = TcpClient::open(sim.tcp_port());
+    CHECK(serves(c));
+}

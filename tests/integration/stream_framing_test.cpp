@@ -1,0 +1,126 @@
+// How the TCP session splits a byte stream into frames: requests split into
+// single bytes, several requests in one write, a pipelined 4E burst, garbage
+// before a frame. After each scenario a "sentinel" loopback request proves
+// that nothing else (a duplicate, an answer to garbage) was sent before it —
+// without waiting on a clock.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <thread>
+
+#include "frames.hpp"
+#include "link.hpp"
+#include "sim_process.hpp"
+#include "sockets.hpp"
+
+using namespace slmp::test;
+namespace client = slmp::protocol::client;
+
+namespace {
+
+const Wire kBin3{FrameKind::E3, Codec::Binary, 0};
+const Wire kAsc3{FrameKind::E3, Codec::Ascii, 0};
+
+Bytes sentinel_request(const Wire& w) {
+    return request_frame(w, w.codec == Codec::Binary ? hex("10 00 19 06 00 00 04 00 53 45 4E 54")
+                                                     : text("001006190000" "0004" "SENT"));
+}
+Bytes sentinel_response(const Wire& w) {
+    return expected_response(w, concat({w.codec == Codec::Binary ? hex("04 00") : text("0004"), text("SENT")}));
+}
+
+// Reads the next response frame; its bytes, or "" on timeout/EOF.
+std::string next(TcpClient& c) {
+    Bytes frame;
+    std::string why;
+    if (!c.response(&frame, kReplyTimeout, &why)) return "<no response: " + why + ">";
+    return show(frame);
+}
+
+}  // namespace
+
+TEST_CASE("A request sent one byte at a time is answered once, correctly", "[framing][tcp]") {
+    SimProcess sim;
+    for (const auto& w : {kBin3, kAsc3, Wire{FrameKind::E4, Codec::Binary, 0x7777}}) {
+        INFO(w.name());
+        auto c = TcpClient::open(sim.tcp_port());
+        std::vector<std::uint16_t> values = {0x0A0B, 0x0C0D};
+        auto request = client::write_words(w.options(), addr("D300"), values);
+        for (auto b : request) {
+            REQUIRE(c.send(Bytes{b}));
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        CHECK(next(c) == show(expected_response(w, {})));
+        auto read = client::read_words(w.options(), addr("D300"), 2);
+        for (auto b : read) {
+            REQUIRE(c.send(Bytes{b}));
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        CHECK(next(c) == show(expected_response(w, word_data(w, values))));
+        REQUIRE(c.send(sentinel_request(w)));
+        CHECK(next(c) == show(sentinel_response(w)));
+    }
+}
+
+TEST_CASE("Three requests in one write get three responses in order", "[framing][tcp]") {
+    SimProcess sim;
+    for (const auto& w : {kBin3, kAsc3}) {
+        INFO(w.name());
+        auto c = TcpClient::open(sim.tcp_port());
+        std::vector<std::uint16_t> values = {0x1111, 0x2222, 0x3333};
+        auto burst = concat({client::write_words(w.options(), addr("D400"), values),
+                             client::read_words(w.options(), addr("D401"), 2),
+                             client::build_request(w.options(), 0x0101, 0x0000)});
+        REQUIRE(c.send(burst));
+        CHECK(next(c) == show(expected_response(w, {})));
+        CHECK(next(c) == show(expected_response(w, word_data(w, {0x2222, 0x3333}))));
+        Bytes type_name;
+        REQUIRE(c.response(&type_name));
+        CHECK(std::string(type_name.begin(), type_name.end()).find("R08CPU          ") != std::string::npos);
+        REQUIRE(c.send(sentinel_request(w)));
+        CHECK(next(c) == show(sentinel_response(w)));
+    }
+}
+
+TEST_CASE("A pipelined burst of 20 4E requests is answered in order with each serial echoed", "[framing][tcp][4e]") {
+    SimOptions options;
+    options.config_json =
+        R"({"devices": {"D0": [100, 101, 102, 103, 104, 105, 106, 107, 108, 109,
+                               110, 111, 112, 113, 114, 115, 116, 117, 118, 119]}})";
+    SimProcess sim(options);
+    for (auto codec : {Codec::Binary, Codec::Ascii}) {
+        auto c = TcpClient::open(sim.tcp_port());
+        Bytes burst;
+        std::vector<Wire> wires;
+        for (std::uint16_t i = 0; i < 20; ++i) {
+            Wire w{FrameKind::E4, codec, static_cast<std::uint16_t>(0xA000 + 0x0101 * i)};
+            wires.push_back(w);
+            auto r = client::read_words(w.options(), addr("D" + std::to_string(i)), 1);
+            burst.insert(burst.end(), r.begin(), r.end());
+        }
+        REQUIRE(c.send(burst));
+        for (std::uint16_t i = 0; i < 20; ++i) {
+            INFO((codec == Codec::Binary ? "binary" : "ASCII") << " request " << i);
+            CHECK(next(c) == show(expected_response(wires[i], word_data(wires[i], {std::uint16_t(100 + i)}))));
+        }
+        Wire w4{FrameKind::E4, codec, 0x5A5A};
+        REQUIRE(c.send(sentinel_request(w4)));
+        CHECK(next(c) == show(sentinel_response(w4)));
+    }
+}
+
+TEST_CASE("Garbage before a valid frame is skipped and only the frame is answered", "[framing][tcp][garbage]") {
+    SimProcess sim;
+    auto c = TcpClient::open(sim.tcp_port());
+    // Bytes that cannot start a 3E/4E subheader in either code (no 0x50/0x54/'5').
+    Bytes garbage = concat({hex("00 01 02 03 FF FE 99 D0 00"), text("hello, plc!\r\n")});
+    auto read = client::read_words(kBin3.options(), addr("D0"), 1);
+    REQUIRE(c.send(concat({garbage, read})));
+    CHECK(next(c) == show(expected_response(kBin3, word_data(kBin3, {0}))));
+    REQUIRE(c.send(concat({garbage, sentinel_request(kAsc3)})));
+    CHECK(next(c) == show(sentinel_response(kAsc3)));
+    // Garbage alone, then later a frame: still one answer, to the frame.
+    REQUIRE(c.send(garbage));
+    REQUIRE(c.send(sentinel_request(kBin3)));
+    CHECK(next(c) == show(sentinel_response(kBin3)));
+}

@@ -1,0 +1,49 @@
+#include "tools/slmp/commands.hpp"
+
+#include <array>
+#include <sstream>
+
+namespace slmp::cli {
+namespace {
+
+// clang-format off
+const std::array<CommandSpec, 13> kCommands = {{
+    {"read", "DEVICE [POINTS]", "0401 Device Read: POINTS words (default 1), or bits with --bits", {"bits"}, run_read},
+    {"write", "DEVICE VALUE...", "1401 Device Write: words (-32768..65535, 0x..), or 0/1 with --bits", {"bits"}, run_write},
+    {"random", "read|write ITEM...", "0403 Read Random / 1402 Write Random: read D0 M100 --dword D200; "
+                                     "write D0=1 --dword D200=70000; write --bits M0=1 Y2F=0", {"bits", "dword"}, run_random},
+    {"monitor", "ITEM...", "poll D100, M0, D100-D109 ... with 0401 every --interval until Ctrl-C or --count",
+                           {"interval", "count"}, run_monitor},
+    {"run", "", "1001 Remote RUN (--force: mode 0003; --clear none|nonlatch|all)", {"force", "clear"}, run_remote_run},
+    {"stop", "", "1002 Remote STOP", {}, run_remote_stop},
+    {"pause", "", "1003 Remote PAUSE (--force: mode 0003)", {"force"}, run_remote_pause},
+    {"reset", "", "1006 Remote RESET (a real CPU answers nothing when it resets)", {}, run_remote_reset},
+    {"latch-clear", "", "1005 Remote Latch Clear (the CPU must be in STOP)", {}, run_remote_latch_clear},
+    {"type", "", "0101 Read Type Name: model name and model code", {}, run_type},
+    {"selftest", "[DATA]", "0619 Self Test: loopback of DATA (default 0123456789ABCDEF)", {}, run_selftest},
+    {"lock", "PASSWORD", "1631 Remote Password Lock", {}, run_lock},
+    {"unlock", "PASSWORD", "1630 Remote Password Unlock", {}, run_unlock},
+}};
+// clang-format on
+
+}  // namespace
+
+const CommandSpec* find_command(std::string_view name) {
+    for (const auto& c : kCommands)
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
+std::string commands_help() {
+    std::ostringstream out;
+    out << "Commands:\n";
+    for (const auto& c : kCommands) {
+        std::string head = std::string(c.name) + (c.usage.empty() ? "" : " " + std::string(c.usage));
+        out << "  " << head;
+        out << std::string(head.size() < 28 ? 28 - head.size() : 1, ' ') << c.summary << '\n';
+    }
+    out << "\nExit status: 0 ok, 1 the PLC answered an error end code, 2 usage error, 3 connection error or timeout.\n";
+    return out.str();
+}
+
+}  // namespace slmp::cli

@@ -1,0 +1,43 @@
+// The slmp command line: global options (target, frame, route, output), the
+// subcommand, its arguments and its own options. Parsing only; the subcommands
+// validate their arguments themselves (commands.hpp).
+#pragma once
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "protocol/client.hpp"
+#include "tools/slmp/client.hpp"
+
+namespace slmp::cli {
+
+struct Options {
+    Target target;
+    protocol::client::FrameOptions frame;
+    protocol::DeviceForm form = protocol::DeviceForm::Q;
+    bool json = false;
+    std::optional<std::string> password;   // --password: Unlock (1630) before the command
+
+    std::string command;
+    std::vector<std::string> args;
+
+    // Subcommand options (each subcommand says which of them it accepts).
+    bool bits = false;                      // read, write, random write
+    std::vector<std::string> dwords;        // random: --dword DEVICE[=VALUE], repeatable
+    std::chrono::milliseconds interval{1000};   // monitor
+    std::optional<unsigned long> count;     // monitor: stop after N polls
+    bool force = false;                     // run, pause
+    std::string clear = "none";             // run
+    std::vector<std::string> given;         // names of the subcommand options actually given
+};
+
+// Parses argv. Returns nullopt when the program should exit with `exit_code`
+// (help printed: 0; usage error printed: 2).
+std::optional<Options> parse_options(int argc, char** argv, int& exit_code);
+
+// "500ms", "2s", "1.5s", "1m"; a bare number is refused because its unit would be a guess.
+std::optional<std::chrono::milliseconds> parse_duration(const std::string& text);
+
+}  // namespace slmp::cli
