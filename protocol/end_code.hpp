@@ -29,8 +29,8 @@ enum class EndCode : std::uint16_t {
     RemoteResetDisabled = 0x4014,       // 1006 with the remote reset parameter off (chosen, docs/cpu-runtime.md)
     RemoteHeldByOther = 0x4015,         // 1001/1003 mode 0001, 1005: another client holds remote STOP/PAUSE (chosen)
     RemotePasswordLockedOut = 0xC815,   // 1630/1631 during the lock-out after repeated mismatches (chosen in C810-C815)
-    // Codes the simulator does not send (yet) but real CPUs and modules answer;
-    // named here so describe() explains them to CLI users and in logs.
+    // Codes real CPUs and modules answer, named so that describe() explains them
+    // to CLI users and in logs (the simulator sends some of them: docs/end-codes.md).
     // Sources: hardware-behaviour.md §2, slmp-frames-and-devices.md §3.5,
     // slmp-labels-remote-misc.md §10.2, §10.4 (L-series manual, marked [ext]).
     RunWriteProhibited = 0x0055,        // [ext] write to a CPU in RUN while online change is disabled

@@ -46,7 +46,14 @@ bool Persistence::save(std::string_view why) {
 
 void Persistence::start() {
     if (interval_.count() <= 0) return;
-    asio::co_spawn(timer_.get_executor(), every_interval(), asio::detached);
+    asio::co_spawn(timer_.get_executor(), every_interval(), [](std::exception_ptr e) {
+        if (!e) return;
+        try {
+            std::rethrow_exception(e);
+        } catch (const std::exception& ex) {
+            spdlog::error("state directory: interval snapshots stopped: {}", ex.what());
+        }
+    });
 }
 
 void Persistence::stop() {

@@ -74,7 +74,7 @@ TEST_CASE("unsupported commands and subcommands -> C059", "[errors]") {
     }
 }
 
-TEST_CASE("route checks (engine.cpp check_route; codes chosen)", "[errors]") {
+TEST_CASE("route checks (engine.cpp check_route, codes chosen)", "[errors]") {
     auto cpu = make_cpu("R08CPU");
     seed(cpu);
     auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
