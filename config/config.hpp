@@ -36,6 +36,9 @@ enum class Transport : std::uint8_t { Tcp, Udp };
 // "binary", "ascii" or "auto"; `where` names the option or key in the error.
 DataCode parse_data_code(const std::string& text, const std::string& where);
 
+// trace, debug, info, warn, error or off.
+bool valid_log_level(const std::string& level);
+
 struct PortConfig {
     Transport transport = Transport::Tcp;
     std::uint16_t port = 5000;             // 0: any free port (see ready_file)

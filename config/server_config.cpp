@@ -93,6 +93,12 @@ std::vector<InitialValue> parse_initial_values(const JsonAt& devices) {
     return list;
 }
 
+bool valid_log_level(const std::string& level) {
+    for (const char* known : {"trace", "debug", "info", "warn", "error", "off"})
+        if (level == known) return true;
+    return false;
+}
+
 DataCode parse_data_code(const std::string& text, const std::string& where) {
     if (text == "binary") return DataCode::Binary;
     if (text == "ascii") return DataCode::Ascii;
@@ -120,7 +126,11 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
     }
     if (root.has("device_sizes")) c.device_sizes = parse_device_sizes(root["device_sizes"]);
     if (root.has("devices")) c.devices = parse_initial_values(root["devices"]);
-    if (root.has("log_level")) c.log_level = root["log_level"].string();
+    if (root.has("log_level")) {
+        c.log_level = root["log_level"].string();
+        if (!valid_log_level(c.log_level))
+            root["log_level"].fail("unknown log level '" + c.log_level + "'", "use trace, debug, info, warn, error or off");
+    }
     if (root.has("http")) c.http = http_config(root["http"]);
     parse_hardware(root, c);
     parse_cpu_runtime(root, c);

@@ -30,7 +30,11 @@ ScenarioRunner::ScenarioRunner(std::vector<Scenario> scenarios, devicemodel::Cpu
         for (const auto& t : s.triggers) triggers_.add(t);
         for (std::size_t i = 0; i < s.faults.size(); ++i) faults_.add(s.faults[i], s.source, Rng::stream(s.seed, i));
         if (s.replay) {
-            replays_.push_back(std::make_unique<ReplayBook>(read_recording(s.replay->file)));
+            try {
+                replays_.push_back(std::make_unique<ReplayBook>(read_recording(s.replay->file)));
+            } catch (const config::ConfigError& e) {
+                throw config::ConfigError(s.source + ": /replay/file: " + e.what());
+            }
             info("replay: " + std::to_string(replays_.back()->size()) + " distinct request(s) from " + s.replay->file);
         } else {
             replays_.push_back(nullptr);

@@ -105,7 +105,11 @@ CommandLine parse_command_line(int argc, char** argv) {
         if (c.max_request_bytes < 64 || c.max_request_bytes > (1u << 20))
             throw ConfigError("--max-request-bytes: use 64 to 1048576 (default 8192)");
     }
-    if (vm.count("log-level")) c.log_level = vm["log-level"].as<std::string>();
+    if (vm.count("log-level")) {
+        c.log_level = vm["log-level"].as<std::string>();
+        if (!config::valid_log_level(c.log_level))
+            throw ConfigError("--log-level " + c.log_level + ": unknown level; use trace, debug, info, warn, error or off");
+    }
     if (vm.count("ready-file")) c.ready_file = vm["ready-file"].as<std::string>();
     if (vm.count("http-port")) {
         auto port = vm["http-port"].as<unsigned>();

@@ -124,3 +124,24 @@ TEST_CASE("Garbage before a valid frame is skipped and only the frame is answere
     REQUIRE(c.send(sentinel_request(kBin3)));
     CHECK(next(c) == show(sentinel_response(kBin3)));
 }
+
+TEST_CASE("A port fixed to one data code skips frames in the other code", "[framing][tcp][data-code]") {
+    SECTION("binary port") {
+        SimProcess sim(with_args({"--data-code", "binary"}));
+        auto c = TcpClient::open(sim.tcp_port());
+        REQUIRE(c.send(concat({client::read_words(kAsc3.options(), addr("D0"), 1), sentinel_request(kBin3)})));
+        CHECK(next(c) == show(sentinel_response(kBin3)));
+    }
+    SECTION("ASCII port") {
+        SimProcess sim(with_args({"--data-code", "ascii"}));
+        auto c = TcpClient::open(sim.tcp_port());
+        REQUIRE(c.send(concat({client::read_words(kBin3.options(), addr("D0"), 1), sentinel_request(kAsc3)})));
+        CHECK(next(c) == show(sentinel_response(kAsc3)));
+        UdpClient u;
+        REQUIRE(u.send_to(sim.udp_port(), client::read_words(kBin3.options(), addr("D0"), 1)));
+        REQUIRE(u.send_to(sim.udp_port(), sentinel_request(kAsc3)));
+        auto reply = u.receive();
+        REQUIRE(reply.has_value());
+        CHECK(show(*reply) == show(sentinel_response(kAsc3)));
+    }
+}

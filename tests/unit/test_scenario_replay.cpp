@@ -122,5 +122,11 @@ TEST_CASE("replay: a scenario answers from its recording; misses go by on_miss",
     auto coded = run_with(R"({"file": "session.jsonl", "on_miss": "end_code", "end_code": "C059"})", other);
     REQUIRE(coded.answer);
     CHECK(hex(*coded.answer) == "D0 00 00 FF FF 03 00 0B 00 59 C0 00 FF FF 03 00 01 04 00 00");
+
+    std::ofstream(dir / "missing.json") << R"({"replay": {"file": "nope.jsonl"}})";
+    devicemodel::Cpu cpu(config::load_profile("R08CPU"));
+    std::vector<scenarios::Scenario> list{scenarios::load_scenario(dir / "missing.json")};
+    CHECK_THROWS_WITH(scenarios::ScenarioRunner(std::move(list), cpu, nullptr),
+                      Catch::Contains("missing.json: /replay/file: ") && Catch::Contains("nope.jsonl: cannot open the recording"));
     std::filesystem::remove_all(dir);
 }

@@ -91,7 +91,8 @@ void run_monitor(Invocation& in) {
             const auto& frame = in.client.frame();
             auto request = item.bits ? client::read_bits(frame, item.range.start, item.points, in.options.form)
                                      : client::read_words(frame, item.range.start, item.points, in.options.form);
-            auto reader = in.client.exchange(request).reader();
+            auto response = in.client.exchange(request);
+            auto reader = response.reader();   // reads from `response`, which must outlive it
             auto data = item.bits ? reader.bits(item.points, "read data") : std::vector<std::uint8_t>{};
             auto words = item.bits ? std::vector<std::uint16_t>{} : reader.words(item.points, "read data");
             if (!reader.finish()) throw ConnectionError("the read data does not match the points requested");
