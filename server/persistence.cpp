@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "server/log_exception.hpp"
+
 #include "devicemodel/snapshot.hpp"
 
 namespace slmp::server {
@@ -46,14 +48,7 @@ bool Persistence::save(std::string_view why) {
 
 void Persistence::start() {
     if (interval_.count() <= 0) return;
-    asio::co_spawn(timer_.get_executor(), every_interval(), [](std::exception_ptr e) {
-        if (!e) return;
-        try {
-            std::rethrow_exception(e);
-        } catch (const std::exception& ex) {
-            spdlog::error("state directory: interval snapshots stopped: {}", ex.what());
-        }
-    });
+    asio::co_spawn(timer_.get_executor(), every_interval(), log_exception("state directory: interval snapshots stopped"));
 }
 
 void Persistence::stop() {

@@ -4,6 +4,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "server/log_exception.hpp"
+
 namespace slmp::server {
 
 namespace asio = boost::asio;
@@ -19,14 +21,7 @@ ScanLoop::ScanLoop(asio::io_context& io, std::vector<devicemodel::Cpu*> cpus, st
     : timer_(io), cpus_(std::move(cpus)), period_(period) {}
 
 void ScanLoop::start() {
-    asio::co_spawn(timer_.get_executor(), run(), [](std::exception_ptr e) {
-        if (!e) return;
-        try {
-            std::rethrow_exception(e);
-        } catch (const std::exception& ex) {
-            spdlog::error("scan cycle stopped: {}", ex.what());
-        }
-    });
+    asio::co_spawn(timer_.get_executor(), run(), log_exception("scan cycle stopped"));
 }
 
 void ScanLoop::stop() {

@@ -10,6 +10,8 @@
 
 #include "frames.hpp"
 #include "sim_process.hpp"
+#include "link.hpp"
+#include "protocol/client_commands.hpp"
 #include "sockets.hpp"
 
 namespace slmp::test {

@@ -71,7 +71,12 @@ function parseRange(text) {
   const start = parseAddress(first);
   let end = start;
   if (last !== undefined) {
-    end = /^[0-9A-Fa-f]+$/.test(last.trim()) ? parseAddress(start.symbol + last.trim()) : parseAddress(last);
+    // "D100-D119" names the end in full; "D100-119" and "X0-1F" give only its number.
+    try {
+      end = parseAddress(last);
+    } catch {
+      end = parseAddress(start.symbol + last.trim());
+    }
     if (end.symbol !== start.symbol) throw new Error(`'${text}' mixes ${start.symbol} and ${end.symbol}; watch one device kind per range`);
     if (end.number < start.number) throw new Error(`'${text}' ends before it starts`);
   }
