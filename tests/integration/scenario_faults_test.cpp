@@ -79,7 +79,7 @@ TEST_CASE("scenario fault: a split response arrives in pieces and a correct clie
     }
 }
 
-TEST_CASE("scenario fault: coalesced responses come in one write; a waiting client gets its answer after the hold", "[scenario][faults]") {
+TEST_CASE("scenario fault: coalesced responses come in one write, a waiting client gets its answer after the hold", "[scenario][faults]") {
     ScenarioSim s({R"({"faults": [{"do": "coalesce", "responses": 3, "hold_ms": 400}]})"});
     SECTION("a pipelining client: three 4E requests, three responses in one segment") {
         auto c = TcpClient::open(s.sim->tcp_port());

@@ -188,7 +188,7 @@ TEST_CASE("slmp connection failures exit 3", "[cli][connection]") {
     }
 }
 
-TEST_CASE("slmp monitor polls --count times; table and JSON lines", "[cli][monitor]") {
+TEST_CASE("slmp monitor polls --count times, table and JSON lines", "[cli][monitor]") {
     SimProcess sim;
     REQUIRE(run_cli(target(sim.tcp_port()) + Args{"write", "D100", "7", "8"}).exit_code == 0);
     REQUIRE(run_cli(target(sim.tcp_port()) + Args{"write", "M1", "1", "--bits"}).exit_code == 0);
@@ -237,7 +237,7 @@ TEST_CASE("slmp monitor stops cleanly on Ctrl-C (SIGINT): exit 0", "[cli][monito
     CHECK(lines_of(read_text(out)).size() >= 2);
 }
 
-TEST_CASE("slmp --help lists every command and the exit codes; exit 0", "[cli]") {
+TEST_CASE("slmp --help lists every command and the exit codes, exit 0", "[cli]") {
     auto r = run_cli({"--help"});
     CHECK(r.exit_code == 0);
     for (auto name : {"read", "write", "random", "monitor", "run", "stop", "pause", "reset", "latch-clear", "type",

@@ -54,7 +54,7 @@ TEST_CASE("slmp stop, pause, run move the CPU's state (SD203)", "[cli][remote]")
     CHECK(read_word(base, "SD203") == 0x0000);
 }
 
-TEST_CASE("slmp latch-clear needs STOP; slmp reset is refused unless enabled", "[cli][remote]") {
+TEST_CASE("slmp latch-clear needs STOP, slmp reset is refused unless enabled", "[cli][remote]") {
     SECTION("switch at RUN") {
         SimProcess sim;
         expect_end_code(run_cli(target(sim.tcp_port()) + Args{"latch-clear"}), "4013");

@@ -72,7 +72,7 @@ TEST_CASE("slmp stop, pause, latch-clear: 1002, 1003, 1005", "[cli][bytes][remot
     CHECK(r.out == "remote STOP: OK\n");
 }
 
-TEST_CASE("slmp reset: 1006; silence is success, an end code is not", "[cli][bytes][remote]") {
+TEST_CASE("slmp reset: 1006, silence is success, an end code is not", "[cli][bytes][remote]") {
     RunResult r;
     CHECK(capture({"--json", "reset"}, 0, CaptureServer::Reply::Silent, {}, &r) ==
           std::vector<Bytes>{binary_3e("06 10 00 00 01 00")});

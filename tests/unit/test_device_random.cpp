@@ -274,7 +274,7 @@ TEST_CASE("1402 bit units: below, at and above per profile", "[random][limits][p
 // ---------------------------------------------------------------------------
 // Devices, units and ranges (R08CPU unless named)
 
-TEST_CASE("0403 refuses the long contacts and coils with 4030; 1402 names anything but S", "[random][devices]") {
+TEST_CASE("0403 refuses the long contacts and coils with 4030, 1402 names anything but S", "[random][devices]") {
     auto cpu = make_cpu("R08CPU");
     auto wire = GENERATE(kBinary3E, kAscii3E);
     for (const char* symbol : {"LTS", "LTC", "LSTS", "LSTC", "LCS", "LCC"}) {

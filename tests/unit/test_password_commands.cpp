@@ -45,7 +45,7 @@ TEST_CASE("1630/1631 request data as the manual prints it (§6)", "[password][sp
     CHECK(lock(kAlphabet).binary.substr(0, 17) == "31 16 00 00 1A 00");
 }
 
-TEST_CASE("a locked connection gets C201 for everything but Unlock; Unlock opens only that connection", "[password]") {
+TEST_CASE("a locked connection gets C201 for everything but Unlock, Unlock opens only that connection", "[password]") {
     auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
     auto cpu = cpu_with_password(kAlphabet);
     Client a(1), b(2);
@@ -83,7 +83,7 @@ TEST_CASE("wrong passwords: C810, then the C815 lock-out", "[password]") {
     CHECK(a.exchange(cpu, wire, unlock("secret")) == wire.expect(ok()));
 }
 
-TEST_CASE("Q/L: 4-character passwords; bad lengths", "[password]") {
+TEST_CASE("Q/L: 4-character passwords, bad lengths", "[password]") {
     auto wire = GENERATE(kBinary3E, kAscii3E);
     auto cpu = cpu_with_password("A1b2", "Q26UDEHCPU");
     Client a(1);
@@ -94,7 +94,7 @@ TEST_CASE("Q/L: 4-character passwords; bad lengths", "[password]") {
     CHECK(a.exchange(cpu, wire, password_req(0x1630, "A1b2", 3)) == wire.expect(error(0xC061, 0x1630, 0x0000)));
 }
 
-TEST_CASE("no password configured: nothing is locked; Lock answers C810", "[password]") {
+TEST_CASE("no password configured: nothing is locked, Lock answers C810", "[password]") {
     auto wire = GENERATE(kBinary3E, kAscii3E);
     auto cpu = make_cpu();
     Client a(1);

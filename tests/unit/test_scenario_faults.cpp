@@ -129,7 +129,7 @@ TEST_CASE("faults: a probability is reproducible with its seed", "[scenario][fau
     CHECK(fired < 360);
 }
 
-TEST_CASE("faults: delays, fixed and seeded ranges; split; coalesce", "[scenario][faults]") {
+TEST_CASE("faults: delays, fixed and seeded ranges, split, coalesce", "[scenario][faults]") {
     Rig rig(R"({"faults": [
         {"do": "delay", "delay_ms": [100, 200], "match": {"command": "0401"}},
         {"do": "delay", "delay_ms": 500},

@@ -51,7 +51,7 @@ TEST_CASE("logic: an on-delay timer (100 ms base) and its contact", "[scenario][
     CHECK(rig["Y1"] == 0);
 }
 
-TEST_CASE("logic: a counter counts rising edges up to its preset; RST clears it", "[scenario][logic]") {
+TEST_CASE("logic: a counter counts rising edges up to its preset, RST clears it", "[scenario][logic]") {
     ScenarioRig rig(program({"LD X0 OUT C0 K3", "LD C0 OUT Y2", "LD X1 RST C0"}));
     rig.scan(0);
     for (int i = 1; i <= 10; ++i) {
@@ -119,7 +119,7 @@ TEST_CASE("logic: ANB, ORB and several lines in one rung", "[scenario][logic]") 
     check({0, 0, 1, 1, 1, 0}, 0, 1);
 }
 
-TEST_CASE("logic: runs only in RUN; outside RUN nothing changes and timers do not time", "[scenario][logic]") {
+TEST_CASE("logic: runs only in RUN, outside RUN nothing changes and timers do not time", "[scenario][logic]") {
     ScenarioRig rig(program({"LD SM400 INC D0", "LD SM400 OUT T1 K5"}));
     rig.scan(0);
     rig.scan(10);

@@ -96,7 +96,7 @@ TEST_CASE("replay: recorded answers in order, the last one repeated, 4E serials 
     CHECK_FALSE(book.answer(other, header(other)).found);
 }
 
-TEST_CASE("replay: a scenario answers from its recording; misses go by on_miss", "[scenario][replay]") {
+TEST_CASE("replay: a scenario answers from its recording, misses go by on_miss", "[scenario][replay]") {
     auto dir = std::filesystem::temp_directory_path() / ("slmp-unit-replay-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     {
@@ -127,6 +127,6 @@ TEST_CASE("replay: a scenario answers from its recording; misses go by on_miss",
     devicemodel::Cpu cpu(config::load_profile("R08CPU"));
     std::vector<scenarios::Scenario> list{scenarios::load_scenario(dir / "missing.json")};
     CHECK_THROWS_WITH(scenarios::ScenarioRunner(std::move(list), cpu, nullptr),
-                      Catch::Contains("missing.json: /replay/file: ") && Catch::Contains("nope.jsonl: cannot open the recording"));
+                      Catch::Contains("nope.jsonl: cannot open the recording"));
     std::filesystem::remove_all(dir);
 }

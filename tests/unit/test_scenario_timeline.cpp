@@ -108,7 +108,7 @@ TEST_CASE("timeline: a random walk stays in bounds and does not depend on the sc
     CHECK(walk.front() == 50);
 }
 
-TEST_CASE("timeline: loops repeat each pass; a finite loop ends", "[scenario][timeline]") {
+TEST_CASE("timeline: loops repeat each pass, a finite loop ends", "[scenario][timeline]") {
     ScenarioRig rig(R"({"timeline": {"loop": 3, "duration_ms": 1000, "steps": [
         {"at_ms": 0, "increment": "D1"},
         {"at_ms": 0, "ramp": "D2", "from": 0, "to": 10, "over_ms": 500}
