@@ -112,6 +112,7 @@ struct ServerConfig {
     PersistenceConfig persistence;
     std::vector<std::string> scenarios;    // --scenario files, run together (docs/scenarios.md)
     std::string record_file;               // --record: every request and response as JSON lines
+    std::string record_pcap_file;          // --record-pcap: the same as a pcap capture for Wireshark
 };
 
 // Reads a configuration file; keys left out keep the defaults above.

@@ -35,6 +35,7 @@ public:
     // Modules by start I/O number ÷ 16 (the "U" number); null when none is there.
     Module* module(std::uint16_t io_number);
     void add_module(std::uint16_t io_number, std::string model, std::uint32_t buffer_words, std::uint32_t head_address);
+    const std::map<std::uint16_t, std::unique_ptr<Module>>& modules() const { return modules_; }
     // Link devices (X Y B SB W SW) of the network module on network `number` (J□\...).
     DeviceMemory* network(std::uint16_t number);
     void add_network(std::uint16_t number, const DeviceSizes& sizes);

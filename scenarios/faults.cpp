@@ -28,22 +28,22 @@ std::string_view to_string(FaultKind kind) {
     return "?";
 }
 
-void FaultSet::add(const Fault& fault, const std::string& source, std::uint64_t seed) {
+void FaultSet::add(const Fault& fault, const std::string& source, std::uint64_t seed, const std::string& scenario) {
     auto name = fault.id.empty() ? source + "#" + fault.pointer : fault.id;
-    entries_.push_back(Entry{&fault, std::move(name), Rng(seed), fault.enabled});
+    entries_.push_back(Entry{&fault, std::move(name), scenario, Rng(seed), fault.enabled});
 }
 
 bool FaultSet::enable(const std::string& id, bool on) {
     bool found = false;
     for (auto& e : entries_)
-        if (e.fault->id == id) e.enabled = on, found = true;
+        if (e.name == id) e.enabled = on, found = true;   // the name is the id when there is one
     return found;
 }
 
 std::vector<FaultStats> FaultSet::stats() const {
     std::vector<FaultStats> list;
     for (const auto& e : entries_)
-        list.push_back({e.name, std::string(to_string(e.fault->action.kind)), e.enabled, e.matched, e.fired});
+        list.push_back({e.name, std::string(to_string(e.fault->action.kind)), e.scenario, e.enabled, e.matched, e.fired});
     return list;
 }
 

@@ -44,6 +44,7 @@ struct FaultDecision {
 struct FaultStats {
     std::string name;        // the fault's id, or "<file>#/faults/2"
     std::string kind;        // "delay", "end_code", ...
+    std::string scenario;    // the name of the scenario it belongs to
     bool enabled = true;
     std::uint64_t matched = 0;
     std::uint64_t fired = 0;
@@ -52,10 +53,11 @@ struct FaultStats {
 class FaultSet {
 public:
     // `seed` per fault: each has its own random stream (Rng::stream).
-    void add(const Fault& fault, const std::string& source, std::uint64_t seed);
+    void add(const Fault& fault, const std::string& source, std::uint64_t seed, const std::string& scenario = {});
 
     FaultDecision decide(const RequestView& request, double now_ms, const EventSink& log);
-    // Turns a fault on or off by id (trigger actions); false when there is none.
+    // Turns a fault on or off by id (trigger actions) or by its stats name
+    // (the HTTP API: "<file>#/faults/2" for one without an id); false when there is none.
     bool enable(const std::string& id, bool on);
     std::vector<FaultStats> stats() const;
 
@@ -63,6 +65,7 @@ private:
     struct Entry {
         const Fault* fault;
         std::string name;
+        std::string scenario;
         Rng rng;
         bool enabled;
         std::uint64_t matched = 0;

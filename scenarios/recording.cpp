@@ -54,8 +54,8 @@ std::string utc_now() {
 
 std::string_view transport_name(Transport t) { return t == Transport::Tcp ? "tcp" : "udp"; }
 
-json event(double t_ms, std::uint64_t connection, Transport transport, const std::string& peer, const char* what) {
-    return json{{"t_ms", t_ms}, {"conn", connection}, {"transport", transport_name(transport)}, {"peer", peer}, {"event", what}};
+json event(double t_ms, const RecordedLink& link, const char* what) {
+    return json{{"t_ms", t_ms}, {"conn", link.connection}, {"transport", transport_name(link.transport)}, {"peer", link.peer}, {"event", what}};
 }
 
 }  // namespace
@@ -77,23 +77,21 @@ void RecordingWriter::line(const std::string& text) {
     out_.flush();
 }
 
-void RecordingWriter::opened(TimePoint at, std::uint64_t connection, Transport transport, const std::string& peer) {
-    line(event(ms(at), connection, transport, peer, "open").dump());
+void RecordingWriter::opened(TimePoint at, const RecordedLink& link) {
+    line(event(ms(at), link, "open").dump());
 }
 
-void RecordingWriter::exchange(TimePoint at, std::uint64_t connection, Transport transport, const std::string& peer,
-                               std::span<const std::uint8_t> request, const std::vector<std::uint8_t>* response,
-                               const std::vector<std::string>& faults) {
-    auto e = event(ms(at), connection, transport, peer, "exchange");
+void RecordingWriter::exchange(TimePoint at, const RecordedLink& link, std::span<const std::uint8_t> request,
+                               const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults) {
+    auto e = event(ms(at), link, "exchange");
     e["request"] = to_hex(request);
     e["response"] = response ? json(to_hex(*response)) : json(nullptr);
     if (!faults.empty()) e["faults"] = faults;
     line(e.dump());
 }
 
-void RecordingWriter::closed(TimePoint at, std::uint64_t connection, Transport transport, const std::string& peer,
-                             const std::string& why) {
-    auto e = event(ms(at), connection, transport, peer, "close");
+void RecordingWriter::closed(TimePoint at, const RecordedLink& link, const std::string& why) {
+    auto e = event(ms(at), link, "close");
     e["why"] = why;
     line(e.dump());
 }

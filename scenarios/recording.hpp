@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/recorder.hpp"
 #include "scenarios/scenario.hpp"
 
 namespace slmp::scenarios {
@@ -43,18 +44,15 @@ Recording read_recording(const std::filesystem::path& file);
 std::string to_hex(std::span<const std::uint8_t> bytes);
 std::optional<std::vector<std::uint8_t>> from_hex(std::string_view text);
 
-class RecordingWriter {
+class RecordingWriter : public Recorder {
 public:
-    using TimePoint = std::chrono::steady_clock::time_point;
-
     // Truncates `file`; throws config::ConfigError when it cannot be written.
     RecordingWriter(const std::filesystem::path& file, const std::string& profile, TimePoint start);
 
-    void opened(TimePoint at, std::uint64_t connection, Transport transport, const std::string& peer);
-    void exchange(TimePoint at, std::uint64_t connection, Transport transport, const std::string& peer,
-                  std::span<const std::uint8_t> request, const std::vector<std::uint8_t>* response,
-                  const std::vector<std::string>& faults);
-    void closed(TimePoint at, std::uint64_t connection, Transport transport, const std::string& peer, const std::string& why);
+    void opened(TimePoint at, const RecordedLink& link) override;
+    void exchange(TimePoint at, const RecordedLink& link, std::span<const std::uint8_t> request,
+                  const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults) override;
+    void closed(TimePoint at, const RecordedLink& link, const std::string& why) override;
 
 private:
     void line(const std::string& text);

@@ -28,7 +28,7 @@ ScenarioRunner::ScenarioRunner(std::vector<Scenario> scenarios, devicemodel::Cpu
         timelines_.push_back(std::make_unique<TimelineRunner>(s.timeline, s.seed));
         logic_.push_back(std::make_unique<LogicRunner>(s.logic));
         for (const auto& t : s.triggers) triggers_.add(t);
-        for (std::size_t i = 0; i < s.faults.size(); ++i) faults_.add(s.faults[i], s.source, Rng::stream(s.seed, i));
+        for (std::size_t i = 0; i < s.faults.size(); ++i) faults_.add(s.faults[i], s.source, Rng::stream(s.seed, i), s.name);
         if (s.replay) {
             try {
                 replays_.push_back(std::make_unique<ReplayBook>(read_recording(s.replay->file)));

@@ -72,6 +72,9 @@ public:
     void after(Plan& plan, const protocol::Outcome& outcome, std::vector<std::uint8_t>& response);
 
     bool powered() const { return powered_; }
+    bool refusing() const { return refusing_; }
+    // Turns a fault on or off by its stats name (FaultSet::enable); false when there is none.
+    bool enable_fault(const std::string& name, bool on) { return faults_.enable(name, on); }
     double now_ms() const { return now_ms_; }
     std::vector<FaultStats> fault_stats() const { return faults_.stats(); }
     const std::vector<Scenario>& scenarios() const { return scenarios_; }

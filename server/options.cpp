@@ -52,7 +52,8 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("switch", po::value<std::string>(), "the CPU's RUN/STOP switch: RUN (default) or STOP")
         ("state-dir", po::value<std::string>(), "keep device memory here across restarts (see docs/cpu-runtime.md)")
         ("scenario", po::value<std::vector<std::string>>(), "run a scenario file (values that move, logic, faults, replay); repeatable (docs/scenarios.md)")
-        ("record", po::value<std::string>(), "record every request and response to this JSON-lines file (docs/scenarios.md)");
+        ("record", po::value<std::string>(), "record every request and response to this JSON-lines file (docs/scenarios.md)")
+        ("record-pcap", po::value<std::string>(), "capture every request and response to this pcap file for Wireshark (docs/scenarios.md)");
 
     po::variables_map vm;
     try {
@@ -130,6 +131,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         c.scenarios.insert(c.scenarios.end(), files.begin(), files.end());
     }
     if (vm.count("record")) c.record_file = vm["record"].as<std::string>();
+    if (vm.count("record-pcap")) c.record_pcap_file = vm["record-pcap"].as<std::string>();
     if (c.ports.empty()) throw ConfigError("no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
     return cl;
 }

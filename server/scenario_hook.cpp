@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "config/config.hpp"
+#include "scenarios/pcap_writer.hpp"
 #include "scenarios/request_view.hpp"
 
 namespace slmp::server {
@@ -38,12 +40,61 @@ void ScenarioHook::start(std::vector<scenarios::Scenario> list, devicemodel::Cpu
         spdlog::info("scenario '{}' ({}): {} step(s), {} trigger(s), {} rung(s), {} fault(s){}", s.name, s.source,
                      s.timeline.steps.size(), s.triggers.size(), s.logic.rungs.size(), s.faults.size(),
                      s.replay ? ", replaying " + s.replay->file : "");
-    runner_ = std::make_unique<scenarios::ScenarioRunner>(std::move(list), cpu, log_event, &station);
+    attach(cpu, station);
+    runners_.add(std::move(list), cpu, log_event, &station);
+}
+
+void ScenarioHook::attach(devicemodel::Cpu& cpu, scenarios::Station& station) {
+    cpu_ = &cpu;
+    station_ = &station;
+}
+
+void ScenarioHook::load(scenarios::Scenario s) {
+    if (!cpu_) throw config::ConfigError("scenarios cannot be loaded before the server has started");
+    // The password is part of the CPU's configuration; it cannot change under connected clients.
+    if (s.initial.password)
+        throw config::ConfigError(s.source + ": /initial/password: a remote password is set only at start; "
+                                  "give this scenario with --scenario, or leave \"password\" out");
+    auto initial = s.initial;
+    auto summary = fmt::format("scenario '{}' ({}) loaded: {} step(s), {} trigger(s), {} rung(s), {} fault(s)", s.name,
+                               s.source, s.timeline.steps.size(), s.triggers.size(), s.logic.rungs.size(), s.faults.size());
+    std::vector<scenarios::Scenario> list;
+    list.push_back(std::move(s));
+    runners_.add(std::move(list), *cpu_, log_event, station_);
+    spdlog::info("{}", summary);
+    config::apply_initial_values(*cpu_, initial.devices);
+    if (initial.run_switch) cpu_->runtime().set_switch(cpu_->memory(), *initial.run_switch);
+    if (initial.error) cpu_->runtime().raise_error(cpu_->memory(), *initial.error);
+}
+
+bool ScenarioHook::stop(const std::string& name) {
+    if (!cpu_ || !runners_.remove(name, *cpu_, log_event, station_)) return false;
+    spdlog::info("scenario '{}' stopped", name);
+    return true;
 }
 
 void ScenarioHook::record(const std::string& file, const std::string& profile) {
-    recorder_ = std::make_unique<scenarios::RecordingWriter>(file, profile, std::chrono::steady_clock::now());
+    if (recording_)
+        throw config::ConfigError("already recording to " + recording_file_ + "; stop that recording first");
+    recorders_.push_back(std::make_unique<scenarios::RecordingWriter>(file, profile, std::chrono::steady_clock::now()));
+    recording_ = recorders_.back().get();
+    recording_file_ = file;
     spdlog::info("recording every request and response to {}", file);
+}
+
+bool ScenarioHook::stop_recording() {
+    if (!recording_) return false;
+    std::erase_if(recorders_, [&](const auto& r) { return r.get() == recording_; });   // closes the file
+    spdlog::info("recording to {} stopped", recording_file_);
+    recording_ = nullptr;
+    recording_file_.clear();
+    return true;
+}
+
+void ScenarioHook::record_pcap(const std::string& file, const std::string& bind) {
+    recorders_.push_back(std::make_unique<scenarios::PcapWriter>(file, bind, std::chrono::steady_clock::now(),
+                                                                 std::chrono::system_clock::now()));
+    spdlog::info("capturing every request and response to {} (pcap)", file);
 }
 
 Handled ScenarioHook::process(protocol::Engine& engine, std::span<const std::uint8_t> input,
@@ -54,18 +105,18 @@ Handled ScenarioHook::process(protocol::Engine& engine, std::span<const std::uin
         return handled;
     }
     scenarios::Plan plan;
-    if (runner_) {
+    if (!runners_.empty()) {
         auto view = scenarios::view_request(input, policy, engine.options().max_frame_bytes, engine.cpu().profile());
         view.transport = link.transport;
         view.peer = std::string(link.peer);
         view.client = std::string(peer_address(link.peer).substr(0, peer_address(link.peer).rfind(':')));
         if (auto it = ordinals_.find(session.id); link.transport == Transport::Tcp && it != ordinals_.end())
             view.connection = it->second;
-        plan = runner_->before(std::move(view), input);
+        plan = runners_.before(view, input);
     }
     auto& outcome = handled.outcome;
     const auto& request = plan.request;
-    if (!runner_ || !request.complete || plan.pass()) {
+    if (runners_.empty() || !request.complete || plan.pass()) {
         outcome = engine.process(input, policy, session);
     } else {
         // The scenario answers (or not) instead of the CPU.
@@ -85,22 +136,24 @@ Handled ScenarioHook::process(protocol::Engine& engine, std::span<const std::uin
                                                                 : ": not answered");
         }
     }
-    if (runner_ && request.complete && outcome.action != Outcome::Action::NeedMore) runner_->after(plan, outcome, outcome.response);
+    if (!runners_.empty() && request.complete && outcome.action != Outcome::Action::NeedMore) runners_.after(plan, outcome, outcome.response);
     handled.delivery = plan.delivery;
     handled.reset = plan.reset;
-    if (recorder_ && outcome.action != Outcome::Action::NeedMore)
-        recorder_->exchange(std::chrono::steady_clock::now(), session.id, link.transport, std::string(peer_address(link.peer)),
-                            input.first(outcome.consumed),
-                            outcome.action == Outcome::Action::Respond ? &outcome.response : nullptr, plan.decision.fired);
+    if (outcome.action != Outcome::Action::NeedMore) {
+        const scenarios::RecordedLink at{session.id, link.transport, std::string(peer_address(link.peer)), link.local_port};
+        for (auto& r : recorders_)
+            r->exchange(std::chrono::steady_clock::now(), at, input.first(outcome.consumed),
+                        outcome.action == Outcome::Action::Respond ? &outcome.response : nullptr, plan.decision.fired);
+    }
     return handled;
 }
 
 void ScenarioHook::scanned(std::chrono::steady_clock::time_point now) {
-    if (runner_) runner_->scan(now);
+    runners_.scan(now);
 }
 
 std::vector<scenarios::FaultStats> ScenarioHook::fault_stats() const {
-    return runner_ ? runner_->fault_stats() : std::vector<scenarios::FaultStats>{};
+    return runners_.fault_stats();
 }
 
 void ScenarioHook::log_summary() const {
@@ -110,12 +163,14 @@ void ScenarioHook::log_summary() const {
 
 void ScenarioHook::on_opened(const Connection& c) {
     if (c.transport == Transport::Tcp) ordinals_[c.id] = ++connections_;
-    if (recorder_) recorder_->opened(std::chrono::steady_clock::now(), c.id, c.transport, std::string(peer_address(c.peer)));
+    const scenarios::RecordedLink at{c.id, c.transport, std::string(peer_address(c.peer)), c.local_port};
+    for (auto& r : recorders_) r->opened(std::chrono::steady_clock::now(), at);
 }
 
 void ScenarioHook::on_closed(const Connection& c, std::string_view why) {
     ordinals_.erase(c.id);
-    if (recorder_) recorder_->closed(std::chrono::steady_clock::now(), c.id, c.transport, std::string(peer_address(c.peer)), std::string(why));
+    const scenarios::RecordedLink at{c.id, c.transport, std::string(peer_address(c.peer)), c.local_port};
+    for (auto& r : recorders_) r->closed(std::chrono::steady_clock::now(), at, std::string(why));
 }
 
 }  // namespace slmp::server

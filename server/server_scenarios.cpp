@@ -21,12 +21,17 @@ std::vector<scenarios::Scenario> Server::load_scenarios() {
 
 void Server::start_scenarios(std::vector<scenarios::Scenario> list) {
     if (!config_.record_file.empty()) core_.scenario.record(config_.record_file, core_.cpu.profile().name);
-    if (!list.empty()) {
+    if (!config_.record_pcap_file.empty()) core_.scenario.record_pcap(config_.record_pcap_file, config_.bind);
+    // With the HTTP API on, scenarios and recordings may start later (POST
+    // /api/scenarios, /api/recording), so the hook is wired up even when idle.
+    const bool later = config_.http.enabled;
+    if (!list.empty() || later) {
         station_ = std::make_unique<ScenarioStation>(core_, tcp_, udp_);
-        core_.scenario.start(std::move(list), core_.cpu, *station_);
+        core_.scenario.attach(core_.cpu, *station_);
+        if (!list.empty()) core_.scenario.start(std::move(list), core_.cpu, *station_);
         scan_->after_scan([this](std::chrono::steady_clock::time_point now) { core_.scenario.scanned(now); });
     }
-    if (core_.scenario.active()) core_.activity.add_observer(&core_.scenario);
+    if (core_.scenario.active() || later) core_.activity.add_observer(&core_.scenario);
 }
 
 }  // namespace slmp::server

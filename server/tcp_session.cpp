@@ -105,7 +105,7 @@ awaitable<void> TcpSession::serve() {
             auto input = std::span<const std::uint8_t>(pending).subspan(offset);
             core_.activity.request_starting();
             auto started = std::chrono::steady_clock::now();
-            auto handled = core_.scenario.process(core_.engine, input, policy_, session_, {config::Transport::Tcp, peer_});
+            auto handled = core_.scenario.process(core_.engine, input, policy_, session_, {config::Transport::Tcp, peer_, local_port_});
             auto& outcome = handled.outcome;
             if (outcome.action == Outcome::Action::NeedMore) break;
             log_outcome(peer_, outcome);

@@ -42,7 +42,7 @@ asio::awaitable<void> UdpListener::serve() {
         auto input = std::span<const std::uint8_t>(datagram.data(), n);
         core_.activity.request_starting();
         auto started = std::chrono::steady_clock::now();
-        auto handled = core_.scenario.process(core_.engine, input, policy_, session_, {config::Transport::Udp, peer});
+        auto handled = core_.scenario.process(core_.engine, input, policy_, session_, {config::Transport::Udp, peer, port_});
         auto& outcome = handled.outcome;
         if (outcome.action == Outcome::Action::NeedMore) {
             spdlog::debug("{} datagram of {} byte(s) holds no whole request frame (check the request data length); "

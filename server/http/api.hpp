@@ -32,6 +32,10 @@ struct Api {
 };
 
 void add_device_endpoints(Router& router, Api& api);       // /api/devices/{address}
+void add_buffer_endpoints(Router& router, Api& api);       // /api/buffer[/{module}/{address}]
+void add_scenario_endpoints(Router& router, Api& api);     // /api/scenarios[/{name}]
+void add_fault_endpoints(Router& router, Api& api);        // /api/faults[/{name}]
+void add_recording_endpoints(Router& router, Api& api);    // /api/recording
 void add_connection_endpoints(Router& router, Api& api);   // /api/connections[/{id}]
 void add_info_endpoint(Router& router, Api& api);          // /api/info
 void add_state_endpoints(Router& router, Api& api);        // /api/state

@@ -1,11 +1,10 @@
 // GET /api/devices/{address}?count=N&as=bits|words|dwords|string
 // PUT /api/devices/{address}?as=...  with {"values": [...]} or {"string": "..."}
 // The views and their checks: device_view.hpp. docs/api.md, "Devices".
-#include <charconv>
-
 #include "server/http/api.hpp"
 #include "server/http/device_view.hpp"
 #include "server/http/event_hub.hpp"
+#include "server/http/value_body.hpp"
 
 namespace slmp::server::http {
 
@@ -23,38 +22,15 @@ View view_of(const ApiRequest& request, const devicemodel::DeviceSpec& spec) {
     return *view;
 }
 
-std::uint64_t count_of(const ApiRequest& request) {
-    const auto* text = request.param("count");
-    if (!text) return 1;
-    std::uint64_t count = 0;
-    auto [ptr, ec] = std::from_chars(text->data(), text->data() + text->size(), count);
-    if (ec != std::errc{} || ptr != text->data() + text->size())
-        bad("count=" + *text + " is not a number; use 1 to " + std::to_string(kMaxValues));
-    return count;
-}
-
-json parse_body(const std::string& body) {
-    auto parsed = json::parse(body, nullptr, false);
-    if (parsed.is_discarded())
-        bad("the body is not valid JSON; send {\"values\": [1, 2, 3]} or {\"string\": \"text\"}");
-    if (!parsed.is_object()) bad("the body must be a JSON object: {\"values\": [...]} or {\"string\": \"...\"}");
-    for (const auto& [key, _] : parsed.items())
-        if (key != "values" && key != "string")
-            bad("unknown key \"" + key + "\" in the body; use \"values\" or \"string\"");
-    if (parsed.contains("values") == parsed.contains("string"))
-        bad("give either \"values\" or \"string\", not " + std::string(parsed.contains("values") ? "both" : "neither"));
-    return parsed;
-}
-
 Reply get_devices(Api& api, const ApiRequest& request) {
     auto start = parse_device(request.captures.at(0));
-    auto run = make_run(api.core.cpu, start, view_of(request, *start.spec), count_of(request));
+    auto run = make_run(api.core.cpu, start, view_of(request, *start.spec), count_param(request));
     return json_reply(read_run(api.core.cpu.memory(), run));
 }
 
 Reply put_devices(Api& api, const ApiRequest& request) {
     auto start = parse_device(request.captures.at(0));
-    auto body = parse_body(request.body);
+    auto body = parse_value_body(request.body);
     auto view = body.contains("string") ? View::String : view_of(request, *start.spec);
     if (body.contains("string") && request.param("as") && view_of(request, *start.spec) != View::String)
         bad("{\"string\": ...} writes as=string; drop as=" + *request.param("as") + " or send \"values\"");

@@ -114,6 +114,13 @@ DeviceAddress parse_device(const std::string& text) {
 }
 
 DeviceRun make_run(const devicemodel::Cpu& cpu, DeviceAddress start, View view, std::uint64_t count) {
+    auto area = std::string(devicemodel::area_name(start.spec->area));
+    return make_run(cpu.memory(), RunPlace{cpu.profile().name, "raise device_sizes." + area + " in the configuration"},
+                    start, view, count);
+}
+
+DeviceRun make_run(const devicemodel::DeviceMemory& memory, const RunPlace& place, DeviceAddress start, View view,
+                   std::uint64_t count) {
     const auto& spec = *start.spec;
     check_view(spec, view);
     if (count == 0 || count > kMaxValues)
@@ -121,15 +128,13 @@ DeviceRun make_run(const devicemodel::Cpu& cpu, DeviceAddress start, View view, 
             " (read larger spans in parts)");
     DeviceRun run{start, view, static_cast<std::uint32_t>(count), devices_spanned(spec, view, count)};
 
-    const auto& memory = cpu.memory();
     auto size = memory.size(spec.area);
     if (!memory.contains(spec.area, start.number, run.devices)) {
-        auto area = std::string(devicemodel::area_name(spec.area));
-        if (size == 0) bad(symbol(spec) + " has no devices in " + cpu.profile().name + " (size 0); raise device_sizes." + area + " in the configuration");
+        if (size == 0) bad(symbol(spec) + " has no devices in " + place.name + " (size 0); " + place.enlarge);
         bad(devicemodel::format_address(start) + " with " + std::to_string(count) + " " + std::string(to_string(view)) +
             " runs past " + devicemodel::format_address(DeviceAddress{&spec, size - 1}) + ", the last " + symbol(spec) +
-            " device of " + cpu.profile().name + " (" + std::to_string(size) + " devices); lower the start or count, " +
-            "or raise device_sizes." + area + " in the configuration");
+            " device of " + place.name + " (" + std::to_string(size) + " devices); lower the start or count, or " +
+            place.enlarge);
     }
     return run;
 }

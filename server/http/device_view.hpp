@@ -43,6 +43,15 @@ struct DeviceRun {
 devicemodel::DeviceAddress parse_device(const std::string& text);
 DeviceRun make_run(const devicemodel::Cpu& cpu, devicemodel::DeviceAddress start, View view, std::uint64_t count);
 
+// Where a run lives, for its out-of-range messages: the owner's name
+// ("R08CPU", "module U3 (Q62DA)") and how to make an area larger.
+struct RunPlace {
+    std::string name;
+    std::string enlarge;   // "raise device_sizes.D in the configuration"
+};
+DeviceRun make_run(const devicemodel::DeviceMemory& memory, const RunPlace& place, devicemodel::DeviceAddress start,
+                   View view, std::uint64_t count);
+
 // {"device", "as", "count", "values" | "string"} for the run as it is now.
 nlohmann::json read_run(const devicemodel::DeviceMemory& memory, const DeviceRun& run);
 

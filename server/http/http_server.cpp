@@ -50,6 +50,10 @@ HttpServer::HttpServer(asio::io_context& io, Core& core, const config::HttpConfi
     api_.ports.http = port_;
 
     add_device_endpoints(router_, api_);
+    add_buffer_endpoints(router_, api_);
+    add_scenario_endpoints(router_, api_);
+    add_fault_endpoints(router_, api_);
+    add_recording_endpoints(router_, api_);
     add_connection_endpoints(router_, api_);
     add_info_endpoint(router_, api_);
     add_state_endpoints(router_, api_);

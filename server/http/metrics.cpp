@@ -126,6 +126,13 @@ std::string Metrics::render() const {
     out += "slmp_connections_accepted_total " + std::to_string(accepted_) + "\n";
     header(out, "slmp_connections_closed_total", "counter", "TCP connections closed (by either side).");
     out += "slmp_connections_closed_total " + std::to_string(closed_) + "\n";
+
+    // Read from the scenarios when scraped: a counter per running fault, gone
+    // when its scenario stops (Prometheus treats a reappearing one as a reset).
+    header(out, "slmp_faults_fired_total", "counter", "Times each fault of the running scenarios fired.");
+    for (const auto& f : core_.scenario.fault_stats())
+        out += "slmp_faults_fired_total{scenario=\"" + label(f.scenario) + "\",fault=\"" + label(f.name) + "\",kind=\"" +
+               label(f.kind) + "\"} " + std::to_string(f.fired) + "\n";
     return out;
 }
 

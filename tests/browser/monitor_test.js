@@ -2,7 +2,8 @@
 // The web monitor in a real headless Chromium (Debian's /usr/bin/chromium,
 // driven by playwright-core; no browser is downloaded) against the real
 // slmp-sim binary: load the page, add watches, see values written over SLMP
-// appear live, edit values in the page and read them back over SLMP.
+// appear live, edit values in the page and read them back over SLMP; the
+// scenario loaded with --scenario and its fault show with their fire counts.
 //
 // Usage: node monitor_test.js [path/to/slmp-sim] [--screenshot FILE]
 //        (or SLMP_SIM_BINARY=...; CHROMIUM=... overrides /usr/bin/chromium)
@@ -46,10 +47,20 @@ function withTimeout(promise, ms, what) {
 
 // ------------------------------------------------------------------ slmp-sim --
 
+// A scenario whose one fault answers C051 to word reads of D200-D209 (and
+// nothing else the checks below do).
+const SCENARIO = {
+  name: 'browser-check',
+  description: 'refuses reads of D200-D209',
+  faults: [{ id: 'refuse-d200', do: 'end_code', end_code: 'C051', match: { command: '0401', devices: 'D200-D209' } }],
+};
+
 async function startSim(dir) {
   const readyFile = path.join(dir, 'ready.json');
+  const scenarioFile = path.join(dir, 'scenario.json');
+  fs.writeFileSync(scenarioFile, JSON.stringify(SCENARIO));
   const sim = childProcess.spawn(binary, ['--tcp-port', '0', '--udp-port', '0', '--http-port', '0', '--bind', '127.0.0.1',
-    '--ready-file', readyFile, '--log-level', 'warn'], { stdio: ['ignore', 'inherit', 'inherit'] });
+    '--ready-file', readyFile, '--log-level', 'warn', '--scenario', scenarioFile], { stdio: ['ignore', 'inherit', 'inherit'] });
   const exited = new Promise((resolve) => sim.on('exit', (code, signal) => resolve({ code, signal })));
   const deadline = Date.now() + WAIT_MS;
   while (Date.now() < deadline) {
@@ -229,6 +240,26 @@ async function main() {
       await page.waitForFunction(() => document.querySelector('#message').textContent.includes('does not fit a 16-bit word'));
       const words = await slmp.readWords('D', 106, 1);
       if (words[0] !== 0) throw new Error(`D106 changed to ${words[0]}`);
+    });
+
+    await check('the scenario from --scenario and its fault are listed', async () => {
+      await page.waitForFunction(() => document.querySelector('#scenarios tbody').textContent.includes('browser-check'));
+      await page.waitForFunction(() => {
+        const row = document.querySelector('#faults tr[data-id="refuse-d200"]');
+        return row && row.cells[2].textContent === 'end_code' && row.cells[5].textContent === '0';
+      });
+    });
+
+    await check('a fault fired over SLMP shows its fire count', async () => {
+      let error = null;
+      await slmp.readWords('D', 200, 1).catch((e) => { error = e.message; });
+      if (error !== 'end code C051') throw new Error(`expected end code C051, got ${error}`);
+      await page.waitForFunction(() => document.querySelector('#faults tr[data-id="refuse-d200"]').cells[5].textContent === '1');
+    });
+
+    await check('a fault turned off in the page no longer fires', async () => {
+      await page.click('#faults tr[data-id="refuse-d200"] input[type="checkbox"]');
+      await eventually(() => slmp.readWords('D', 200, 1).catch((e) => e.message), [0], 'D200 over SLMP');
     });
 
     await check('the page raised no script errors', async () => {

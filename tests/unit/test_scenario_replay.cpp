@@ -29,11 +29,12 @@ TEST_CASE("recording: written as JSON lines and read back", "[scenario][replay]"
     auto t0 = at(0);
     {
         scenarios::RecordingWriter w(file, "R08CPU", t0);
-        w.opened(at(1), 2, scenarios::Transport::Tcp, "127.0.0.1:5555");
+        const scenarios::RecordedLink link{2, scenarios::Transport::Tcp, "127.0.0.1:5555", 5000};
+        w.opened(at(1), link);
         Bytes response = bytes("D0 00 00 FF FF 03 00 04 00 00 00 2A 00");
-        w.exchange(at(2.5), 2, scenarios::Transport::Tcp, "127.0.0.1:5555", kRead3E, &response, {"slow"});
-        w.exchange(at(3), 2, scenarios::Transport::Tcp, "127.0.0.1:5555", kRead3E, nullptr, {});
-        w.closed(at(4), 2, scenarios::Transport::Tcp, "127.0.0.1:5555", "closed by the client");
+        w.exchange(at(2.5), link, kRead3E, &response, {"slow"});
+        w.exchange(at(3), link, kRead3E, nullptr, {});
+        w.closed(at(4), link, "closed by the client");
     }
     std::ifstream in(file);
     std::string header, open, exchange;
@@ -102,7 +103,7 @@ TEST_CASE("replay: a scenario answers from its recording, misses go by on_miss",
     {
         scenarios::RecordingWriter w(dir / "session.jsonl", "R08CPU", at(0));
         Bytes response = bytes("D0 00 00 FF FF 03 00 04 00 00 00 2A 00");
-        w.exchange(at(1), 1, scenarios::Transport::Tcp, "127.0.0.1:1", kRead3E, &response, {});
+        w.exchange(at(1), {1, scenarios::Transport::Tcp, "127.0.0.1:1", 5000}, kRead3E, &response, {});
     }
     auto run_with = [&](const std::string& replay, const Bytes& frame) {
         std::ofstream(dir / "replay.json") << R"({"replay": )" << replay << "}";
@@ -126,7 +127,8 @@ TEST_CASE("replay: a scenario answers from its recording, misses go by on_miss",
     std::ofstream(dir / "missing.json") << R"({"replay": {"file": "nope.jsonl"}})";
     devicemodel::Cpu cpu(config::load_profile("R08CPU"));
     std::vector<scenarios::Scenario> list{scenarios::load_scenario(dir / "missing.json")};
+    // The message names the scenario file, the JSON pointer of the key to fix, and the recording.
     CHECK_THROWS_WITH(scenarios::ScenarioRunner(std::move(list), cpu, nullptr),
-                      Catch::Contains("nope.jsonl: cannot open the recording"));
+                      Catch::Contains("missing.json: /replay/file: ") && Catch::Contains("nope.jsonl: cannot open the recording"));
     std::filesystem::remove_all(dir);
 }

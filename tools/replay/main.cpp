@@ -7,6 +7,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include <boost/program_options.hpp>
@@ -24,6 +25,7 @@ namespace {
 struct Options {
     std::string file, host = "127.0.0.1";
     std::uint16_t port = 5000;
+    std::optional<std::uint16_t> udp_port;   // when UDP is served on another port than TCP
     std::chrono::milliseconds timeout{2000}, silence{200};
     bool pace = false;
     std::size_t max_shown = 20;
@@ -52,6 +54,7 @@ Options parse(int argc, char** argv) {
         ("help,h", "print this help")
         ("host", po::value<std::string>(), "server address (default 127.0.0.1)")
         ("port", po::value<unsigned>(), "SLMP port (default 5000); TCP or UDP as recorded")
+        ("udp-port", po::value<unsigned>(), "port for the recorded UDP exchanges (default: --port)")
         ("timeout-ms", po::value<unsigned>(), "longest wait for each answer (default 2000)")
         ("silence-ms", po::value<unsigned>(), "how long to listen where the recording has no answer (default 200)")
         ("pace", "keep the recorded time between requests (default: as fast as answers come)")
@@ -64,19 +67,27 @@ Options parse(int argc, char** argv) {
     all.add(named).add(hidden);
     po::variables_map vm;
     po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
-    if (vm.count("help") || !vm.count("recording")) {
+    if (!vm.count("help") && !vm.count("recording"))
+        throw std::runtime_error("no recording given; usage: slmp-replay RECORDING.jsonl [options] (--help for more)");
+    if (vm.count("help")) {
         std::cout << "slmp-replay — send a recorded SLMP session to a server and report differing answers\n\n"
-                  << "Usage: slmp-replay RECORDING.jsonl [options]\n\n" << named << "\n";
-        std::exit(vm.count("help") ? 0 : 2);
+                  << "Usage: slmp-replay RECORDING.jsonl [options]\n\n"
+                  << "RECORDING.jsonl is a recording made with slmp-sim --record FILE.\n\n" << named
+                  << "\nExit status: 0 every answer identical, 1 some answers differ or are missing,\n"
+                     "2 bad options, an unreadable recording or no server.\n"
+                     "Reference: docs/scenarios.md \"Record & replay\".\n";
+        std::exit(0);
     }
     Options o;
     o.file = vm["recording"].as<std::string>();
     if (vm.count("host")) o.host = vm["host"].as<std::string>();
-    if (vm.count("port")) {
-        auto p = vm["port"].as<unsigned>();
-        if (p == 0 || p > 65535) throw std::runtime_error("--port " + std::to_string(p) + ": use 1-65535");
-        o.port = static_cast<std::uint16_t>(p);
-    }
+    auto port = [&](const char* name) {
+        auto p = vm[name].as<unsigned>();
+        if (p == 0 || p > 65535) throw std::runtime_error(std::string("--") + name + " " + std::to_string(p) + ": use 1-65535");
+        return static_cast<std::uint16_t>(p);
+    };
+    if (vm.count("port")) o.port = port("port");
+    if (vm.count("udp-port")) o.udp_port = port("udp-port");
     if (vm.count("timeout-ms")) o.timeout = std::chrono::milliseconds(vm["timeout-ms"].as<unsigned>());
     if (vm.count("silence-ms")) o.silence = std::chrono::milliseconds(vm["silence-ms"].as<unsigned>());
     o.pace = vm.count("pace") > 0;
@@ -106,7 +117,8 @@ int main(int argc, char** argv) {
         previous_ms = e.t_ms;
         auto& wire = wires[e.connection];
         try {
-            if (!wire) wire = std::make_unique<Wire>(o.host, o.port, e.transport == slmp::scenarios::Transport::Udp);
+            bool udp = e.transport == slmp::scenarios::Transport::Udp;
+            if (!wire) wire = std::make_unique<Wire>(o.host, udp ? o.udp_port.value_or(o.port) : o.port, udp);
         } catch (const std::exception& ex) {
             std::cerr << "slmp-replay: error: " << ex.what() << "\n";
             return 2;
@@ -115,6 +127,11 @@ int main(int argc, char** argv) {
         std::optional<Bytes> got;
         if (wire->send(e.request)) got = wire->receive(e.response ? o.timeout : o.silence, why);
         else why = "send failed";
+        if (wire->refused()) {   // no server at all is not a difference: it is exit 2, like a refused TCP connect
+            std::cerr << "slmp-replay: error: nothing answers on UDP " << o.host << ":" << o.udp_port.value_or(o.port)
+                      << " (port unreachable)\n";
+            return 2;
+        }
         bool match = got ? (e.response && *got == *e.response) : !e.response;
         if (match) {
             ++same;

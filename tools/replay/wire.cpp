@@ -90,6 +90,7 @@ std::optional<Bytes> Wire::receive(std::chrono::milliseconds timeout, std::strin
             continue;
         }
         if (n < 0 && errno == EINTR) continue;
+        refused_ = n < 0 && errno == ECONNREFUSED;
         why = n == 0 ? "connection closed" : errno == ECONNRESET ? "connection reset" : std::strerror(errno);
         return std::nullopt;
     }

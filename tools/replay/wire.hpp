@@ -26,10 +26,14 @@ public:
     // One response frame, or nullopt when none came within `timeout`
     // (`why` says: timeout, closed, reset, undecodable).
     std::optional<Bytes> receive(std::chrono::milliseconds timeout, std::string& why);
+    // Nothing listens there: a UDP send came back as ICMP port unreachable
+    // (a TCP connect fails in the constructor instead).
+    bool refused() const { return refused_; }
 
 private:
     int fd_ = -1;
     bool udp_;
+    bool refused_ = false;
     Bytes pending_;
 };
 

@@ -1,5 +1,6 @@
 // The slmp-sim web monitor: device watch lists that update live, in-place
-// editing, the open connections and a call monitor of recent requests.
+// editing, the open connections, running scenarios with their fault counts
+// and a call monitor of recent requests.
 // Talks only to the simulator's own HTTP API (docs/api.md); no libraries.
 'use strict';
 
@@ -278,6 +279,55 @@ async function refreshConnections() {
   }
 }
 
+// ------------------------------------------------------ scenarios, faults --
+
+// Polled: fault counts change with every request, too often for events.
+async function refreshScenarios() {
+  try {
+    const [s, f] = await Promise.all([api('GET', '/api/scenarios'), api('GET', '/api/faults')]);
+    const scenarios = $('#scenarios tbody');
+    scenarios.replaceChildren();
+    for (const sc of s.scenarios) {
+      const row = scenarios.insertRow();
+      row.title = sc.description;
+      for (const text of [sc.name, sc.source, `${(sc.clock_ms / 1000).toFixed(1)} s`]) row.insertCell().textContent = text;
+      const button = document.createElement('button');
+      button.textContent = 'Stop';
+      button.title = 'Stop this scenario (its devices keep their values)';
+      button.addEventListener('click', async () => {
+        try { await api('DELETE', `/api/scenarios/${encodeURIComponent(sc.name)}`); } catch (e) { showMessage(e.message); }
+        refreshScenarios();
+      });
+      row.insertCell().append(button);
+    }
+    $('#scenario-count').textContent = `(${s.scenarios.length})`;
+
+    const faults = $('#faults tbody');
+    faults.replaceChildren();
+    for (const fault of f.faults) {
+      const row = faults.insertRow();
+      row.dataset.id = fault.id;
+      for (const text of [fault.id, fault.scenario, fault.kind]) row.insertCell().textContent = text;
+      const toggle = document.createElement('input');
+      toggle.type = 'checkbox';
+      toggle.checked = fault.enabled;
+      toggle.title = 'Turn this fault on or off';
+      toggle.addEventListener('change', async () => {
+        try { await api('PUT', `/api/faults/${encodeURIComponent(fault.id)}`, { enabled: toggle.checked }); } catch (e) { showMessage(e.message); }
+        refreshScenarios();
+      });
+      row.insertCell().append(toggle);
+      row.insertCell().textContent = fault.matched;
+      const fired = row.insertCell();
+      fired.textContent = fault.fired;
+      fired.className = fault.fired > 0 ? 'fired' : '';
+    }
+    $('#fault-count').textContent = `(${f.faults.length})`;
+  } catch (e) {
+    showMessage(`scenarios: ${e.message}`);
+  }
+}
+
 // ----------------------------------------------------------- call monitor --
 
 function addCall(call) {
@@ -366,6 +416,8 @@ async function start() {
   // Remote RUN/STOP/PAUSE from SLMP clients change the state too; a light poll follows them.
   refreshState();
   setInterval(refreshState, 1000);
+  refreshScenarios();
+  setInterval(refreshScenarios, 2000);
 
   const saved = JSON.parse(localStorage.getItem(STORAGE_KEY) || '[]');
   for (const s of saved) {

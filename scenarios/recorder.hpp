@@ -1,0 +1,37 @@
+// What --record and --record-pcap have in common: something told about every
+// connection and every exchange as they happen. The JSON-lines recording
+// (recording.hpp) and the pcap capture (pcap_writer.hpp) each implement it;
+// the server hook keeps a list of them, so both formats can be on at once.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "scenarios/scenario.hpp"
+
+namespace slmp::scenarios {
+
+// Which connection an event belongs to, as a recording names it.
+struct RecordedLink {
+    std::uint64_t connection = 0;    // TCP connection id, or the UDP port's session id
+    Transport transport = Transport::Tcp;
+    std::string peer;                // the client: "127.0.0.1:50312"
+    std::uint16_t local_port = 0;    // the simulator's port the client talked to (0: unknown)
+};
+
+class Recorder {
+public:
+    using TimePoint = std::chrono::steady_clock::time_point;
+    virtual ~Recorder() = default;
+
+    virtual void opened(TimePoint at, const RecordedLink& link) = 0;
+    // `response` is null when nothing was sent; `faults` names the faults that fired.
+    virtual void exchange(TimePoint at, const RecordedLink& link, std::span<const std::uint8_t> request,
+                          const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults) = 0;
+    virtual void closed(TimePoint at, const RecordedLink& link, const std::string& why) = 0;
+};
+
+}  // namespace slmp::scenarios
