@@ -67,7 +67,13 @@ EndCode resolve(CommandContext& ctx, const DeviceField& field, Use use, Target& 
     std::int64_t offset = 0;
     if (!index_value(ctx.cpu, ext.target_modifier, offset)) return EndCode::BadRequestContent;
     const auto place = static_cast<std::int64_t>(ext.target) + offset;
-    switch (ext.kind) {
+    // U3E0-U3E3 is the CPU buffer memory however it was written: the ASCII form
+    // has no F8/FA byte to tell it from a module, and Z may move a U onto it.
+    // Any other number behind FA names a CPU that is not there: 4043, as a
+    // missing module or network (the same answer in binary and ASCII).
+    const bool cpu_place = place >= 0x3E0 && place <= 0x3E3;
+    auto kind = ext.kind == Kind::ModuleAccess && cpu_place ? Kind::CpuBuffer : ext.kind;
+    switch (kind) {
         case Kind::None:
             if (spec.extension_only) return end_code(profile.unknown_device_code);
             target.memory = &ctx.cpu.memory();
@@ -87,7 +93,7 @@ EndCode resolve(CommandContext& ctx, const DeviceField& field, Use use, Target& 
         }
         case Kind::CpuBuffer: {
             if (spec.area != Area::G && spec.area != Area::HG) return end_code(profile.unknown_device_code);
-            if (place < 0x3E0 || place > 0x3E3) return EndCode::BadRequestContent;
+            if (!cpu_place) return kNoSuchModule;
             auto* cpu = ctx.cpus[static_cast<std::size_t>(place - 0x3E0)];
             if (!cpu) return kNoSuchModule;
             target.memory = &cpu->memory();

@@ -112,6 +112,25 @@ TEST_CASE("§7.4 Example U3E0: CPU buffer memory 1 of CPU No.1 (U3E0\\G1), 0082"
     }
 }
 
+TEST_CASE("U3E□ beyond CPU No.4 and U□ moved onto U3E0 by Z answer alike in binary and ASCII", "[extended]") {
+    auto cpu = make_station();
+    cpu.memory().set_value(spec_of("G"), 1, 0x5A5A);
+    auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
+    // ASCII has no F8/FA byte: "U3E4" is a module number there and a CPU number
+    // in binary; either way nothing answers at 3E4 (4043, as a missing module).
+    CHECK(wire.exchange(cpu, read1(0x0082, ext_device(Form::IQR, "G1", cpu_buffer(0x3E4)))) ==
+          wire.expect(error(0x4043, 0x0401, 0x0082)));
+    // U3DF with Z0 = 1 lands on U3E0: the CPU buffer memory, in both codecs.
+    cpu.memory().set_value(spec_of("Z"), 0, 1);
+    auto moved = cpu_buffer(0x3DF);
+    moved.target_index = z(0);
+    CHECK(wire.exchange(cpu, read1(0x0082, ext_device(Form::IQR, "G1", moved))) == wire.expect(ok(word(0x5A5A))));
+    auto module_moved = module_access(0x3DF);
+    module_moved.target_index = z(0);
+    CHECK(wire.exchange(cpu, read1(0x0082, ext_device(Form::IQR, "G1", module_moved))) ==
+          wire.expect(ok(word(0x5A5A))));
+}
+
 TEST_CASE("§7.5 Example JZ: W100 of network 1+Z0 (J1Z0\\W100), in 0403/0080", "[extended][spec]") {
     auto cpu = make_station();
     net(cpu, 1).set_value(spec_of("W"), 0x100, 0x0001);
