@@ -53,6 +53,7 @@ void Runtime::scan(DeviceMemory& memory, TimePoint now, const CalendarTime& cale
         special::publish_first_scan(memory, false);
         return;
     }
+    scan_current_ = elapsed;
     scan_min_ = scan_min_ ? std::min(*scan_min_, elapsed) : elapsed;
     scan_max_ = scan_max_ ? std::max(*scan_max_, elapsed) : elapsed;
     special::publish_scan_times(memory, elapsed, *scan_min_, *scan_max_);

@@ -44,6 +44,14 @@ public:
     // One scan at time `now` (steady) with the wall-clock calendar.
     void scan(DeviceMemory& memory, TimePoint now, const CalendarTime& calendar);
     TimePoint now() const { return last_scan_; }
+    // The scan time statistics SD520-SD525 publish (none before the second scan in RUN).
+    struct ScanTimes {
+        std::chrono::microseconds current, min, max;
+    };
+    std::optional<ScanTimes> scan_times() const {
+        if (!scan_min_) return std::nullopt;
+        return ScanTimes{scan_current_, *scan_min_, *scan_max_};
+    }
 
     RunState state() const { return state_.state(); }
     const OperatingState& operating_state() const { return state_; }
@@ -85,6 +93,7 @@ private:
     TimePoint last_scan_{};
     bool first_scan_ = false;
     std::optional<std::chrono::microseconds> scan_min_, scan_max_;
+    std::chrono::microseconds scan_current_{};
 };
 
 }  // namespace slmp::devicemodel

@@ -127,6 +127,17 @@ std::string Metrics::render() const {
     header(out, "slmp_connections_closed_total", "counter", "TCP connections closed (by either side).");
     out += "slmp_connections_closed_total " + std::to_string(closed_) + "\n";
 
+    // The CPU's own view (SD203 and SD520-SD525), so a dashboard needs no SLMP poll.
+    header(out, "slmp_cpu_state", "gauge", "Operating state as SD203 shows it: 0 RUN, 2 STOP, 3 PAUSE.");
+    out += "slmp_cpu_state " + std::to_string(static_cast<int>(core_.cpu.runtime().state())) + "\n";
+    header(out, "slmp_scan_time_seconds", "gauge", "Scan time in RUN: the last scan, and the minimum and maximum since RUN.");
+    if (auto scan = core_.cpu.runtime().scan_times()) {
+        auto seconds = [](std::chrono::microseconds us) { return number(std::chrono::duration<double>(us).count()); };
+        out += "slmp_scan_time_seconds{kind=\"current\"} " + seconds(scan->current) + "\n";
+        out += "slmp_scan_time_seconds{kind=\"min\"} " + seconds(scan->min) + "\n";
+        out += "slmp_scan_time_seconds{kind=\"max\"} " + seconds(scan->max) + "\n";
+    }
+
     // Read from the scenarios when scraped: a counter per running fault, gone
     // when its scenario stops (Prometheus treats a reappearing one as a reset).
     header(out, "slmp_faults_fired_total", "counter", "Times each fault of the running scenarios fired.");

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "frames.hpp"
+#include "protocol/client_commands.hpp"
 #include "http_client.hpp"
 #include "link.hpp"
 #include "sim_process.hpp"
@@ -98,4 +99,31 @@ TEST_CASE("metrics: counters move as expected after a known sequence of requests
     } while (m["slmp_unparsed_frames_total{transport=\"udp\"}"] != 1 && std::chrono::steady_clock::now() < deadline);
     CHECK(m["slmp_unparsed_frames_total{transport=\"udp\"}"] == 1);
     CHECK(m["slmp_request_duration_seconds_count"] == 7);
+}
+
+TEST_CASE("metrics: the CPU state follows a remote STOP and RUN, scan times appear in RUN", "[http][metrics]") {
+    SimProcess sim;
+    const Wire binary{FrameKind::E3, Codec::Binary, 0};
+    auto scrape = [&] { return samples(http_get(sim.http_port(), "/metrics").body); };
+
+    // Scan statistics exist from the second scan in RUN on (as SD520-SD525); bounded wait.
+    auto m = scrape();
+    auto deadline = std::chrono::steady_clock::now() + kReplyTimeout;
+    while (!m.count("slmp_scan_time_seconds{kind=\"max\"}") && std::chrono::steady_clock::now() < deadline) m = scrape();
+    CHECK(m["slmp_cpu_state"] == 0);
+    REQUIRE(m.count("slmp_scan_time_seconds{kind=\"max\"}"));
+    CHECK(m["slmp_scan_time_seconds{kind=\"min\"}"] > 0);
+    CHECK(m["slmp_scan_time_seconds{kind=\"min\"}"] <= m["slmp_scan_time_seconds{kind=\"max\"}"]);
+
+    TcpLink tcp(sim.tcp_port());
+    // A remote operation takes effect at a scan boundary: wait for it, bounded.
+    auto state_after = [&](const Bytes& request, double expected) {
+        REQUIRE(!tcp.exchange(request).empty());
+        auto until = std::chrono::steady_clock::now() + kReplyTimeout;
+        auto state = scrape()["slmp_cpu_state"];
+        while (state != expected && std::chrono::steady_clock::now() < until) state = scrape()["slmp_cpu_state"];
+        return state;
+    };
+    CHECK(state_after(client::remote_stop(binary.options()), 2) == 2);
+    CHECK(state_after(client::remote_run(binary.options(), client::RemoteMode::Normal, client::ClearMode::None), 0) == 0);
 }
