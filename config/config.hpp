@@ -113,7 +113,9 @@ struct ServerConfig {
     std::vector<std::string> scenarios;    // --scenario files, run together (docs/scenarios.md)
     std::string record_file;               // --record: every request and response as JSON lines
     std::string record_pcap_file;          // --record-pcap: the same as a pcap capture for Wireshark
+    double clock_speed = 1;                // the CPU's clock runs this many times faster than the host's
 };
+inline constexpr double kMinClockSpeed = 0.01, kMaxClockSpeed = 1000;
 
 // Reads a configuration file; keys left out keep the defaults above.
 ServerConfig load_server_config(const std::filesystem::path& file);

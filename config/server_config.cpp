@@ -110,7 +110,8 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
     auto json = parse_json(json_text, source);
     JsonAt root(json, source);
     root.only_keys({"profile", "bind", "ports", "max_request_bytes", "device_sizes", "devices", "log_level", "modules",
-                    "networks", "cpus", "http", "cpu", "state_dir", "snapshot_interval_s", "restore"});
+                    "networks", "cpus", "http", "cpu", "state_dir", "snapshot_interval_s", "restore",
+                    "clock_speed"});
     ServerConfig c;
     if (root.has("profile")) c.profile = root["profile"].string();
     if (root.has("bind")) c.bind = root["bind"].string();

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <boost/program_options.hpp>
+#include <fmt/format.h>
 
 namespace slmp::server {
 
@@ -53,6 +54,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("state-dir", po::value<std::string>(), "keep device memory here across restarts (see docs/cpu-runtime.md)")
         ("scenario", po::value<std::vector<std::string>>(), "run a scenario file (values that move, logic, faults, replay); repeatable (docs/scenarios.md)")
         ("record", po::value<std::string>(), "record every request and response to this JSON-lines file (docs/scenarios.md)")
+        ("clock-speed", po::value<double>(), "run the CPU's clock (scan, timers, scenarios) this many times faster than real time (default 1)")
         ("record-pcap", po::value<std::string>(), "capture every request and response to this pcap file for Wireshark (docs/scenarios.md)");
 
     po::variables_map vm;
@@ -132,6 +134,11 @@ CommandLine parse_command_line(int argc, char** argv) {
     }
     if (vm.count("record")) c.record_file = vm["record"].as<std::string>();
     if (vm.count("record-pcap")) c.record_pcap_file = vm["record-pcap"].as<std::string>();
+    if (vm.count("clock-speed")) {
+        c.clock_speed = vm["clock-speed"].as<double>();
+        if (!(c.clock_speed >= config::kMinClockSpeed && c.clock_speed <= config::kMaxClockSpeed))
+            throw ConfigError(fmt::format("--clock-speed {}", c.clock_speed) + ": out of range; use a factor from 0.01 to 1000 (default 1: real time)");
+    }
     if (c.ports.empty()) throw ConfigError("no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
     return cl;
 }

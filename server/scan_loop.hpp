@@ -18,7 +18,10 @@ devicemodel::CalendarTime local_calendar(std::chrono::system_clock::time_point n
 
 class ScanLoop {
 public:
-    ScanLoop(boost::asio::io_context& io, std::vector<devicemodel::Cpu*> cpus, std::chrono::milliseconds period);
+    // `speed` > 1 runs the CPU's clock faster than the host's (scans still come
+    // every `period` of real time, each covering period × speed of CPU time).
+    ScanLoop(boost::asio::io_context& io, std::vector<devicemodel::Cpu*> cpus, std::chrono::milliseconds period,
+             double speed = 1);
 
     void start();
     void stop();
@@ -31,6 +34,7 @@ private:
     boost::asio::steady_timer timer_;
     std::vector<devicemodel::Cpu*> cpus_;
     std::chrono::milliseconds period_;
+    double speed_;
     bool stopped_ = false;
     std::function<void(std::chrono::steady_clock::time_point)> after_scan_;
 };

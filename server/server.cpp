@@ -124,7 +124,7 @@ void Server::start_cpu_runtime() {
     cpu.runtime().set_initial_values([this](devicemodel::DeviceMemory&) { config::apply_initial_values(core_.cpu, config_.devices); });
     std::vector<devicemodel::Cpu*> cpus{&cpu};
     for (auto& other : core_.other_cpus) cpus.push_back(other.get());
-    scan_ = std::make_unique<ScanLoop>(io_, std::move(cpus), cpu.runtime().config().scan_time);
+    scan_ = std::make_unique<ScanLoop>(io_, std::move(cpus), cpu.runtime().config().scan_time, config_.clock_speed);
     if (!config_.persistence.state_dir.empty()) {
         persistence_ = std::make_unique<Persistence>(io_, cpu, config_.persistence);
         persistence_->restore();

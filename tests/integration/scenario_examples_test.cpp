@@ -1,8 +1,9 @@
 // The shipped examples (scenarios/examples/) do what docs/scenarios.md
 // "Examples" says, seen by a client of the real simulator running the file as
 // shipped. The examples run in real time (a tank cycle is 20 s, the stop error
-// comes after ~19 s and the power cycle at 40 s), so these tests poll with
-// generous deadlines and never check how fast anything happened.
+// comes after ~19 s and the power cycle at 40 s; stop_on_error runs at
+// --clock-speed 10), so these tests poll with generous deadlines and never
+// check how fast anything happened.
 // conveyor and password_locked: scenario_plant_test.cpp.
 #include <catch2/catch.hpp>
 
@@ -75,7 +76,8 @@ TEST_CASE("example tank: fill/drain ramps in a loop, high/low alarms, a held-for
 
 TEST_CASE("example stop_on_error: a held condition raises stop error 3100, a timed power cycle recovers",
           "[scenario][examples][stop-on-error]") {
-    ScenarioSim s({example("stop_on_error")});
+    // At --clock-speed 10 the 40 s story takes about 4 s; the deadlines stay generous.
+    ScenarioSim s({example("stop_on_error")}, {"--clock-speed", "10"});
     auto c = TcpClient::open(s.sim->tcp_port());
     CHECK(read_word(c, "SD203").value_or(0xFF) % 16 == 0);   // RUN
     CHECK((read_word(c, "SM0").value_or(1) & 1) == 0);       // no error
@@ -202,4 +204,13 @@ TEST_CASE("example flaky_network: seeded delays, lost answers, resets, split and
     for (const char* fault : {"'slow' \\(delay\\)", "'lost' \\(no_response\\)", "'reset' \\(reset\\)", "'split' \\(split\\)",
                               "'coalesce-4e' \\(coalesce\\)"})
         CHECK(std::regex_search(logs, std::regex(std::string("fault ") + fault + " matched [0-9]+ request\\(s\\), fired [1-9]")));
+}
+
+TEST_CASE("--clock-speed runs the CPU's clock faster: SD412 counts CPU seconds", "[scenario][clock]") {
+    // 20x: SD412 (seconds since power-on) passes 30 within 1.5 s of real time;
+    // at real time it could not within the 10 s allowed here, so the test fails
+    // if the factor is ignored.
+    ScenarioSim s({R"({"name": "idle"})"}, {"--clock-speed", "20"});
+    auto c = TcpClient::open(s.sim->tcp_port());
+    CHECK(eventually([&] { auto v = read_word(c, "SD412"); return v && *v >= 30 && *v != 0xFFFF; }, 10s));
 }

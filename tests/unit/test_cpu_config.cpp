@@ -75,4 +75,6 @@ TEST_CASE("cpu configuration errors name the key and the fix", "[config][runtime
     fails(R"({"cpu": {"password": "abcdef"}})", "use exactly 4 characters", "Q26UDEHCPU");
     fails(R"({"cpu": {"password": "abc def"}})", "printable ASCII");
     CHECK_THROWS_WITH(parse(R"({"restore": "some"})"), Catch::Contains("use \"latched\" or \"all\""));
+    CHECK_THROWS_WITH(parse(R"({"clock_speed": 5000})"), Catch::Contains("/clock_speed: out of range; use a factor from 0.01 to 1000"));
+    CHECK(parse(R"({"clock_speed": 12.5})").clock_speed == 12.5);
 }
