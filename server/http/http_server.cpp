@@ -1,5 +1,7 @@
 #include "server/http/http_server.hpp"
 
+#include <array>
+
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <spdlog/spdlog.h>
@@ -112,6 +114,7 @@ asio::awaitable<void> HttpServer::serve(tcp::socket socket) {
     } unregister{sockets_, registered};
 
     beast::flat_buffer buffer;
+    bool refused_body = false;
     for (;;) {
         bhttp::request_parser<bhttp::string_body> parser;
         parser.body_limit(kMaxBodyBytes);
@@ -121,6 +124,7 @@ asio::awaitable<void> HttpServer::serve(tcp::socket socket) {
 
         Reply reply;
         bool keep_alive = false;
+        refused_body = ec == bhttp::error::body_limit;
         unsigned version = 11;
         if (ec == bhttp::error::body_limit) {
             reply = error_reply(Status::payload_too_large, "the request body is over " + std::to_string(kMaxBodyBytes) +
@@ -156,6 +160,19 @@ asio::awaitable<void> HttpServer::serve(tcp::socket socket) {
     }
     boost::system::error_code ignored;
     stream.socket().shutdown(tcp::socket::shutdown_send, ignored);
+    if (refused_body) {
+        // Lingering close: the client is still sending the body we refused.
+        // Closing with that data unread makes the kernel answer with an RST,
+        // which can destroy the 413 before the client reads it; so read and
+        // drop the rest (bounded in bytes and time) until the client closes.
+        stream.expires_after(std::chrono::seconds(2));
+        std::array<char, 16384> sink;
+        for (std::size_t drained = 0; drained < 4 * kMaxBodyBytes;) {
+            boost::system::error_code ec;
+            drained += co_await stream.async_read_some(asio::buffer(sink), asio::redirect_error(asio::use_awaitable, ec));
+            if (ec) break;
+        }
+    }
 }
 
 }  // namespace slmp::server::http

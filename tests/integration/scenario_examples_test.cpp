@@ -206,7 +206,7 @@ TEST_CASE("example flaky_network: seeded delays, lost answers, resets, split and
         CHECK(std::regex_search(logs, std::regex(std::string("fault ") + fault + " matched [0-9]+ request\\(s\\), fired [1-9]")));
 }
 
-TEST_CASE("--clock-speed runs the CPU's clock faster: SD412 counts CPU seconds", "[scenario][clock]") {
+TEST_CASE("clock speed: --clock-speed runs the CPU's clock faster: SD412 counts CPU seconds", "[scenario][clock]") {
     // 20x: SD412 (seconds since power-on) passes 30 within 1.5 s of real time;
     // at real time it could not within the 10 s allowed here, so the test fails
     // if the factor is ignored.
