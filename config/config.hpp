@@ -116,6 +116,7 @@ struct ServerConfig {
     double clock_speed = 1;                // the CPU's clock runs this many times faster than the host's
 };
 inline constexpr double kMinClockSpeed = 0.01, kMaxClockSpeed = 1000;
+inline constexpr const char* kClockSpeedFix = "use a factor from 0.01 to 1000 (default 1: real time)";
 
 // Reads a configuration file; keys left out keep the defaults above.
 ServerConfig load_server_config(const std::filesystem::path& file);

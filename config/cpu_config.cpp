@@ -162,8 +162,7 @@ void parse_cpu_runtime(const JsonAt& root, ServerConfig& c) {
     if (root.has("cpu")) cpu_object(root["cpu"], c.cpu);
     if (root.has("state_dir")) c.persistence.state_dir = root["state_dir"].string();
     if (root.has("clock_speed"))
-        c.clock_speed = positive_number(root["clock_speed"], kMinClockSpeed, kMaxClockSpeed,
-                                        "use a factor from 0.01 to 1000 (default 1: real time)");
+        c.clock_speed = positive_number(root["clock_speed"], kMinClockSpeed, kMaxClockSpeed, kClockSpeedFix);
     if (root.has("snapshot_interval_s"))
         c.persistence.snapshot_interval_s =
             positive_number(root["snapshot_interval_s"], 0, 86400, "use 0 (only at shutdown) to 86400 seconds");

@@ -137,7 +137,7 @@ CommandLine parse_command_line(int argc, char** argv) {
     if (vm.count("clock-speed")) {
         c.clock_speed = vm["clock-speed"].as<double>();
         if (!(c.clock_speed >= config::kMinClockSpeed && c.clock_speed <= config::kMaxClockSpeed))
-            throw ConfigError(fmt::format("--clock-speed {}", c.clock_speed) + ": out of range; use a factor from 0.01 to 1000 (default 1: real time)");
+            throw ConfigError(fmt::format("--clock-speed {}: out of range; {}", c.clock_speed, config::kClockSpeedFix));
     }
     if (c.ports.empty()) throw ConfigError("no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
     return cl;

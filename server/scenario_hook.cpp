@@ -109,7 +109,8 @@ Handled ScenarioHook::process(protocol::Engine& engine, std::span<const std::uin
         auto view = scenarios::view_request(input, policy, engine.options().max_frame_bytes, engine.cpu().profile());
         view.transport = link.transport;
         view.peer = std::string(link.peer);
-        view.client = std::string(peer_address(link.peer).substr(0, peer_address(link.peer).rfind(':')));
+        const auto address = peer_address(link.peer);
+        view.client = std::string(address.substr(0, address.rfind(':')));
         if (auto it = ordinals_.find(session.id); link.transport == Transport::Tcp && it != ordinals_.end())
             view.connection = it->second;
         plan = runners_.before(view, input);
@@ -139,7 +140,7 @@ Handled ScenarioHook::process(protocol::Engine& engine, std::span<const std::uin
     if (!runners_.empty() && request.complete && outcome.action != Outcome::Action::NeedMore) runners_.after(plan, outcome, outcome.response);
     handled.delivery = plan.delivery;
     handled.reset = plan.reset;
-    if (outcome.action != Outcome::Action::NeedMore) {
+    if (!recorders_.empty() && outcome.action != Outcome::Action::NeedMore) {
         const scenarios::RecordedLink at{session.id, link.transport, std::string(peer_address(link.peer)), link.local_port};
         for (auto& r : recorders_)
             r->exchange(std::chrono::steady_clock::now(), at, input.first(outcome.consumed),

@@ -34,6 +34,8 @@
 #include <thread>
 #include <vector>
 
+#include "support/files.hpp"
+
 #ifndef SLMP_SIM_BINARY
 #error "SLMP_SIM_BINARY must name the slmp-sim executable under test"
 #endif
@@ -73,13 +75,6 @@ public:
 private:
     std::filesystem::path path_;
 };
-
-inline std::string read_text(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
-}
 
 namespace detail {
 

@@ -14,6 +14,7 @@
 #include "config/builtin_profiles.hpp"
 #include "protocol/command_table.hpp"
 #include "support/device_commands.hpp"
+#include "support/files.hpp"
 
 using namespace slmp;
 using namespace slmp::test;
@@ -150,18 +151,12 @@ std::string render() {
     return out.str();
 }
 
-std::string read_file(const char* path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 }  // namespace
 
 TEST_CASE("docs/compatibility.md matches what every profile answers to every command, binary and ASCII", "[compat]") {
     const auto table = render();
-    auto doc = read_file(kDoc);
+    auto doc = read_text(kDoc);
     auto begin = doc.find(kBegin);
     auto end = doc.find(kEnd);
     REQUIRE(begin != std::string::npos);

@@ -4,29 +4,17 @@
 // the schema test (tests/schema/check_scenarios.py), which checks that
 // schema.json rejects the same documents where a schema can.
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "support/files.hpp"
 #include "support/scenario_fixtures.hpp"
 
 using namespace slmp;
 using namespace slmp::test;
 
-namespace {
-
-std::string read(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-}  // namespace
-
 TEST_CASE("scenario loader: each kind of mistake names the file, the pointer and the fix", "[scenario][loader]") {
-    auto list = nlohmann::json::parse(read(std::filesystem::path(SLMP_SOURCE_DIR) / "tests/data/scenario_mistakes.json"));
+    auto list = nlohmann::json::parse(read_text(std::filesystem::path(SLMP_SOURCE_DIR) / "tests/data/scenario_mistakes.json"));
     REQUIRE(list.size() >= 30);
     for (const auto& item : list) {
         auto text = item.contains("text") ? item["text"].get<std::string>() : item["doc"].dump();
