@@ -13,6 +13,7 @@
 #include "devicemodel/cpu_profile.hpp"
 #include "devicemodel/device_table.hpp"
 #include "devicemodel/runtime_config.hpp"
+#include "protocol/peer.hpp"
 
 namespace slmp::config {
 
@@ -31,7 +32,7 @@ devicemodel::CpuProfile parse_profile(const std::string& json_text, const std::s
 
 // --- Server configuration ----------------------------------------------------
 enum class DataCode : std::uint8_t { Binary, Ascii, Auto };
-enum class Transport : std::uint8_t { Tcp, Udp };
+using Transport = protocol::Transport;   // the port's transport (protocol/peer.hpp)
 
 // "binary", "ascii" or "auto"; `where` names the option or key in the error.
 DataCode parse_data_code(const std::string& text, const std::string& where);

@@ -2,7 +2,6 @@
 
 namespace slmp::server {
 
-std::string_view to_string(Transport transport) { return transport == Transport::Tcp ? "tcp" : "udp"; }
 
 void Activity::request(const RequestRecord& record) {
     if (auto it = connections_.find(record.connection); it != connections_.end()) ++it->second.requests;

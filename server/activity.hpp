@@ -20,7 +20,7 @@ namespace slmp::server {
 
 using config::Transport;
 
-std::string_view to_string(Transport transport);   // "tcp", "udp"
+using protocol::to_string;   // "tcp", "udp"
 
 // One handled frame, as the listener saw it. Valid only during the call.
 struct RequestRecord {
