@@ -33,7 +33,7 @@ Area area(const JsonAt& at) {
 // "answer", "silence", "close", or a 4-digit end code such as "C059".
 Refusal refusal(const JsonAt& at) {
     auto text = at.string();
-    if (text == "answer") return {Refusal::Kind::Answer, 0};
+    if (text == "answer") return {Refusal::Kind::Serve, 0};
     if (text == "silence") return {Refusal::Kind::Silence, 0};
     if (text == "close") return {Refusal::Kind::Close, 0};
     if (text.size() != 4) at.fail("'" + text + "' is not a port reaction", "use answer, silence, close or an end code like \"C059\"");
@@ -85,9 +85,14 @@ CpuProfile parse_profile(const std::string& json_text, const std::string& source
     p.family = family(root["family"]);
     p.frame_4e = refusal(root["frame_4e"]);
     p.iqr_subcommands = refusal(root["iqr_subcommands"]);
-    auto unsupported = root["unsupported_commands"];
-    unsupported.expect_array();
-    for (std::size_t i = 0; i < unsupported.json().size(); ++i) p.unsupported_commands.push_back(unsupported[i].hex_code());
+    // Which commands a port family serves is the command table's (families);
+    // a profile may refuse more.
+    if (root.has("unsupported_commands")) {
+        auto unsupported = root["unsupported_commands"];
+        unsupported.expect_array();
+        for (std::size_t i = 0; i < unsupported.json().size(); ++i)
+            p.unsupported_commands.push_back(unsupported[i].hex_code());
+    }
 
     auto codes = root["end_codes"];
     codes.only_keys({"not_supported", "out_of_range", "not_accessible", "unknown_device", "bad_unit"});

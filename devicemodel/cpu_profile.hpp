@@ -17,8 +17,8 @@ enum class Family : std::uint8_t { IQR, QnU, L, QJ71E71, IQF };
 
 // How a port reacts to a request it does not serve.
 struct Refusal {
-    enum class Kind : std::uint8_t { Answer, EndCode, Close, Silence };
-    Kind kind = Kind::Answer;     // Answer: the request is served normally
+    enum class Kind : std::uint8_t { Serve, EndCode, Close, Silence };
+    Kind kind = Kind::Serve;      // Serve: the port serves the request normally
     std::uint16_t end_code = 0;   // for EndCode
 };
 

@@ -57,6 +57,7 @@ public:
     const OperatingState& operating_state() const { return state_; }
     const LatchMap& latch() const { return latch_; }
     RemotePassword& password() { return password_; }
+    const RemotePassword& password() const { return password_; }
 
     RemoteRefusal remote_run(DeviceMemory& memory, ClientId client, bool forced, ClearMode clear);
     RemoteRefusal remote_stop(DeviceMemory& memory, ClientId client);

@@ -11,69 +11,93 @@ namespace {
 using namespace commands;
 using enum DeviceForm;
 using enum Access;
+using devicemodel::Family;
 
-// Sorted by (command, subcommand); checked below. `true` after the access
-// marks the extended (008x) layout; the last flag marks commands that cannot
-// reach CPU No.2–4 of a multi-CPU system (Appendix 3).
-constexpr bool kExt = true;
-constexpr bool kControlCpuOnly = true;
+// Which port families serve a command (hardware-behaviour.md §4): the QnU/L
+// built-in ports refuse 0101, 0406/1406, 0619 and 0613/1613; the FX5 built-in
+// port refuses 0801/0802 and 0613/1613. Every other command is served by all.
+constexpr Families kAll = 0xFF;
+constexpr Families kNotQL = kAll & ~(family_bit(Family::QnU) | family_bit(Family::L));
+constexpr Families kNotFx5 = kAll & ~family_bit(Family::IQF);
+constexpr Families kNotQLFx5 = kNotQL & kNotFx5;
+
+constexpr std::uint8_t kExt = kExtended;
+constexpr std::uint8_t kCtl = kControlCpuOnly;
+constexpr std::uint8_t kW = kWrites;
+constexpr std::uint8_t kOp = kOperator;
+// Remote password rows: exempt from the lock they open.
+constexpr std::uint8_t kPw = kPasswordExempt;
+
+// Sorted by (command, subcommand); checked below. Columns: command, subcommand,
+// name, handler, decoder (device commands), device form, access, flags, families.
 constexpr std::array kCommands = {
-    CommandSpec{0x0101, 0x0000, "Read Type Name", read_type_name},
-    CommandSpec{0x0401, 0x0000, "Device Read (word units, Q form)", batch_read, Q, Words},
-    CommandSpec{0x0401, 0x0001, "Device Read (bit units, Q form)", batch_read, Q, Bits},
-    CommandSpec{0x0401, 0x0002, "Device Read (word units, iQ-R form)", batch_read, IQR, Words},
-    CommandSpec{0x0401, 0x0003, "Device Read (bit units, iQ-R form)", batch_read, IQR, Bits},
-    CommandSpec{0x0401, 0x0080, "Device Read (word units, Q form, extended)", batch_read, Q, Words, kExt},
-    CommandSpec{0x0401, 0x0081, "Device Read (bit units, Q form, extended)", batch_read, Q, Bits, kExt},
-    CommandSpec{0x0401, 0x0082, "Device Read (word units, iQ-R form, extended)", batch_read, IQR, Words, kExt},
-    CommandSpec{0x0401, 0x0083, "Device Read (bit units, iQ-R form, extended)", batch_read, IQR, Bits, kExt},
-    CommandSpec{0x0403, 0x0000, "Read Random (Q form)", random_read, Q, Words},
-    CommandSpec{0x0403, 0x0002, "Read Random (iQ-R form)", random_read, IQR, Words},
-    CommandSpec{0x0403, 0x0080, "Read Random (Q form, extended)", random_read, Q, Words, kExt},
-    CommandSpec{0x0403, 0x0082, "Read Random (iQ-R form, extended)", random_read, IQR, Words, kExt},
-    CommandSpec{0x0406, 0x0000, "Read Block (Q form)", block_read, Q, Words},
-    CommandSpec{0x0406, 0x0002, "Read Block (iQ-R form)", block_read, IQR, Words},
-    CommandSpec{0x0406, 0x0080, "Read Block (Q form, extended)", block_read, Q, Words, kExt},
-    CommandSpec{0x0406, 0x0082, "Read Block (iQ-R form, extended)", block_read, IQR, Words, kExt},
+    CommandSpec{0x0101, 0x0000, "Read Type Name", read_type_name, nullptr, Q, None, 0, kNotQL},
+    CommandSpec{0x0401, 0x0000, "Device Read (word units, Q form)", batch_read, decode_batch, Q, Words},
+    CommandSpec{0x0401, 0x0001, "Device Read (bit units, Q form)", batch_read, decode_batch, Q, Bits},
+    CommandSpec{0x0401, 0x0002, "Device Read (word units, iQ-R form)", batch_read, decode_batch, IQR, Words},
+    CommandSpec{0x0401, 0x0003, "Device Read (bit units, iQ-R form)", batch_read, decode_batch, IQR, Bits},
+    CommandSpec{0x0401, 0x0080, "Device Read (word units, Q form, extended)", batch_read, decode_batch, Q, Words, kExt},
+    CommandSpec{0x0401, 0x0081, "Device Read (bit units, Q form, extended)", batch_read, decode_batch, Q, Bits, kExt},
+    CommandSpec{0x0401, 0x0082, "Device Read (word units, iQ-R form, extended)", batch_read, decode_batch, IQR, Words, kExt},
+    CommandSpec{0x0401, 0x0083, "Device Read (bit units, iQ-R form, extended)", batch_read, decode_batch, IQR, Bits, kExt},
+    CommandSpec{0x0403, 0x0000, "Read Random (Q form)", random_read, decode_random_read, Q, Words},
+    CommandSpec{0x0403, 0x0002, "Read Random (iQ-R form)", random_read, decode_random_read, IQR, Words},
+    CommandSpec{0x0403, 0x0080, "Read Random (Q form, extended)", random_read, decode_random_read, Q, Words, kExt},
+    CommandSpec{0x0403, 0x0082, "Read Random (iQ-R form, extended)", random_read, decode_random_read, IQR, Words, kExt},
+    CommandSpec{0x0406, 0x0000, "Read Block (Q form)", block_read, decode_block_read, Q, Words, 0, kNotQL},
+    CommandSpec{0x0406, 0x0002, "Read Block (iQ-R form)", block_read, decode_block_read, IQR, Words, 0, kNotQL},
+    CommandSpec{0x0406, 0x0080, "Read Block (Q form, extended)", block_read, decode_block_read, Q, Words, kExt, kNotQL},
+    CommandSpec{0x0406, 0x0082, "Read Block (iQ-R form, extended)", block_read, decode_block_read, IQR, Words, kExt, kNotQL},
     CommandSpec{0x0601, 0x0000, "Extend Unit Read", extend_unit_read},
-    CommandSpec{0x0613, 0x0000, "Memory Read", memory_read, Q, None, false, kControlCpuOnly},
-    CommandSpec{0x0619, 0x0000, "Self Test (loopback)", self_test, Q, None, false, kControlCpuOnly},
-    CommandSpec{0x0801, 0x0000, "Entry Monitor Device (Q form)", monitor_register, Q, Words, false, kControlCpuOnly},
-    CommandSpec{0x0801, 0x0002, "Entry Monitor Device (iQ-R form)", monitor_register, IQR, Words, false, kControlCpuOnly},
-    CommandSpec{0x0801, 0x0080, "Entry Monitor Device (Q form, extended)", monitor_register, Q, Words, kExt, kControlCpuOnly},
-    CommandSpec{0x0801, 0x0082, "Entry Monitor Device (iQ-R form, extended)", monitor_register, IQR, Words, kExt,
-                kControlCpuOnly},
-    CommandSpec{0x0802, 0x0000, "Execute Monitor", monitor_execute, Q, None, false, kControlCpuOnly},
-    CommandSpec{0x1001, 0x0000, "Remote RUN", remote_run},
-    CommandSpec{0x1002, 0x0000, "Remote STOP", remote_stop},
-    CommandSpec{0x1003, 0x0000, "Remote PAUSE", remote_pause},
-    CommandSpec{0x1005, 0x0000, "Remote Latch Clear", remote_latch_clear},
-    CommandSpec{0x1006, 0x0000, "Remote RESET", remote_reset},
-    CommandSpec{0x1401, 0x0000, "Device Write (word units, Q form)", batch_write, Q, Words},
-    CommandSpec{0x1401, 0x0001, "Device Write (bit units, Q form)", batch_write, Q, Bits},
-    CommandSpec{0x1401, 0x0002, "Device Write (word units, iQ-R form)", batch_write, IQR, Words},
-    CommandSpec{0x1401, 0x0003, "Device Write (bit units, iQ-R form)", batch_write, IQR, Bits},
-    CommandSpec{0x1401, 0x0080, "Device Write (word units, Q form, extended)", batch_write, Q, Words, kExt},
-    CommandSpec{0x1401, 0x0081, "Device Write (bit units, Q form, extended)", batch_write, Q, Bits, kExt},
-    CommandSpec{0x1401, 0x0082, "Device Write (word units, iQ-R form, extended)", batch_write, IQR, Words, kExt},
-    CommandSpec{0x1401, 0x0083, "Device Write (bit units, iQ-R form, extended)", batch_write, IQR, Bits, kExt},
-    CommandSpec{0x1402, 0x0000, "Write Random (word units, Q form)", random_write_words, Q, Words},
-    CommandSpec{0x1402, 0x0001, "Write Random (bit units, Q form)", random_write_bits, Q, Bits},
-    CommandSpec{0x1402, 0x0002, "Write Random (word units, iQ-R form)", random_write_words, IQR, Words},
-    CommandSpec{0x1402, 0x0003, "Write Random (bit units, iQ-R form)", random_write_bits, IQR, Bits},
-    CommandSpec{0x1402, 0x0080, "Write Random (word units, Q form, extended)", random_write_words, Q, Words, kExt},
-    CommandSpec{0x1402, 0x0081, "Write Random (bit units, Q form, extended)", random_write_bits, Q, Bits, kExt},
-    CommandSpec{0x1402, 0x0082, "Write Random (word units, iQ-R form, extended)", random_write_words, IQR, Words, kExt},
-    CommandSpec{0x1402, 0x0083, "Write Random (bit units, iQ-R form, extended)", random_write_bits, IQR, Bits, kExt},
-    CommandSpec{0x1406, 0x0000, "Write Block (Q form)", block_write, Q, Words},
-    CommandSpec{0x1406, 0x0002, "Write Block (iQ-R form)", block_write, IQR, Words},
-    CommandSpec{0x1406, 0x0080, "Write Block (Q form, extended)", block_write, Q, Words, kExt},
-    CommandSpec{0x1406, 0x0082, "Write Block (iQ-R form, extended)", block_write, IQR, Words, kExt},
-    CommandSpec{0x1601, 0x0000, "Extend Unit Write", extend_unit_write},
-    CommandSpec{0x1613, 0x0000, "Memory Write", memory_write, Q, None, false, kControlCpuOnly},
-    CommandSpec{0x1617, 0x0000, "Clear Error", clear_error, Q, None, false, kControlCpuOnly},
-    CommandSpec{0x1630, 0x0000, "Remote Password Unlock", password_unlock},
-    CommandSpec{0x1631, 0x0000, "Remote Password Lock", password_lock},
+    CommandSpec{0x0613, 0x0000, "Memory Read", memory_read, nullptr, Q, None, kCtl, kNotQLFx5},
+    CommandSpec{0x0619, 0x0000, "Self Test (loopback)", self_test, nullptr, Q, None, kCtl, kNotQL},
+    CommandSpec{0x0801, 0x0000, "Entry Monitor Device (Q form)", monitor_register, decode_monitor, Q, Words, kCtl, kNotFx5},
+    CommandSpec{0x0801, 0x0002, "Entry Monitor Device (iQ-R form)", monitor_register, decode_monitor, IQR, Words, kCtl, kNotFx5},
+    CommandSpec{0x0801, 0x0080, "Entry Monitor Device (Q form, extended)", monitor_register, decode_monitor, Q, Words,
+                kExt | kCtl, kNotFx5},
+    CommandSpec{0x0801, 0x0082, "Entry Monitor Device (iQ-R form, extended)", monitor_register, decode_monitor, IQR,
+                Words, kExt | kCtl, kNotFx5},
+    CommandSpec{0x0802, 0x0000, "Execute Monitor", monitor_execute, nullptr, Q, None, kCtl, kNotFx5},
+    CommandSpec{0x1001, 0x0000, "Remote RUN", remote_run, nullptr, Q, None, kOp | kW},
+    CommandSpec{0x1002, 0x0000, "Remote STOP", remote_stop, nullptr, Q, None, kOp},
+    CommandSpec{0x1003, 0x0000, "Remote PAUSE", remote_pause, nullptr, Q, None, kOp},
+    CommandSpec{0x1005, 0x0000, "Remote Latch Clear", remote_latch_clear, nullptr, Q, None, kOp | kW},
+    CommandSpec{0x1006, 0x0000, "Remote RESET", remote_reset, nullptr, Q, None, kOp | kW},
+    CommandSpec{0x1401, 0x0000, "Device Write (word units, Q form)", batch_write, decode_batch, Q, Words, kW},
+    CommandSpec{0x1401, 0x0001, "Device Write (bit units, Q form)", batch_write, decode_batch, Q, Bits, kW},
+    CommandSpec{0x1401, 0x0002, "Device Write (word units, iQ-R form)", batch_write, decode_batch, IQR, Words, kW},
+    CommandSpec{0x1401, 0x0003, "Device Write (bit units, iQ-R form)", batch_write, decode_batch, IQR, Bits, kW},
+    CommandSpec{0x1401, 0x0080, "Device Write (word units, Q form, extended)", batch_write, decode_batch, Q, Words, kExt | kW},
+    CommandSpec{0x1401, 0x0081, "Device Write (bit units, Q form, extended)", batch_write, decode_batch, Q, Bits, kExt | kW},
+    CommandSpec{0x1401, 0x0082, "Device Write (word units, iQ-R form, extended)", batch_write, decode_batch, IQR, Words,
+                kExt | kW},
+    CommandSpec{0x1401, 0x0083, "Device Write (bit units, iQ-R form, extended)", batch_write, decode_batch, IQR, Bits,
+                kExt | kW},
+    CommandSpec{0x1402, 0x0000, "Write Random (word units, Q form)", random_write_words, decode_random_write_words, Q,
+                Words, kW},
+    CommandSpec{0x1402, 0x0001, "Write Random (bit units, Q form)", random_write_bits, decode_random_write_bits, Q, Bits, kW},
+    CommandSpec{0x1402, 0x0002, "Write Random (word units, iQ-R form)", random_write_words, decode_random_write_words, IQR,
+                Words, kW},
+    CommandSpec{0x1402, 0x0003, "Write Random (bit units, iQ-R form)", random_write_bits, decode_random_write_bits, IQR,
+                Bits, kW},
+    CommandSpec{0x1402, 0x0080, "Write Random (word units, Q form, extended)", random_write_words,
+                decode_random_write_words, Q, Words, kExt | kW},
+    CommandSpec{0x1402, 0x0081, "Write Random (bit units, Q form, extended)", random_write_bits, decode_random_write_bits,
+                Q, Bits, kExt | kW},
+    CommandSpec{0x1402, 0x0082, "Write Random (word units, iQ-R form, extended)", random_write_words,
+                decode_random_write_words, IQR, Words, kExt | kW},
+    CommandSpec{0x1402, 0x0083, "Write Random (bit units, iQ-R form, extended)", random_write_bits,
+                decode_random_write_bits, IQR, Bits, kExt | kW},
+    CommandSpec{0x1406, 0x0000, "Write Block (Q form)", block_write, decode_block_write, Q, Words, kW, kNotQL},
+    CommandSpec{0x1406, 0x0002, "Write Block (iQ-R form)", block_write, decode_block_write, IQR, Words, kW, kNotQL},
+    CommandSpec{0x1406, 0x0080, "Write Block (Q form, extended)", block_write, decode_block_write, Q, Words, kExt | kW, kNotQL},
+    CommandSpec{0x1406, 0x0082, "Write Block (iQ-R form, extended)", block_write, decode_block_write, IQR, Words,
+                kExt | kW, kNotQL},
+    CommandSpec{0x1601, 0x0000, "Extend Unit Write", extend_unit_write, nullptr, Q, None, kW},
+    CommandSpec{0x1613, 0x0000, "Memory Write", memory_write, nullptr, Q, None, kCtl | kW, kNotQLFx5},
+    CommandSpec{0x1617, 0x0000, "Clear Error", clear_error, nullptr, Q, None, kCtl | kOp},
+    CommandSpec{0x1630, 0x0000, "Remote Password Unlock", password_unlock, nullptr, Q, None, kPw},
+    CommandSpec{0x1631, 0x0000, "Remote Password Lock", password_lock, nullptr, Q, None, kPw},
 };
 
 constexpr bool sorted_and_unique() {
@@ -85,6 +109,22 @@ constexpr bool sorted_and_unique() {
     return true;
 }
 static_assert(sorted_and_unique(), "kCommands must be sorted by (command, subcommand) without duplicates");
+
+// The per-command facts must agree across a command's rows, since the request
+// path asks them of any row (find_any_row) before the subcommand is known.
+constexpr bool per_command_flags_agree() {
+    constexpr std::uint8_t kPerCommand = kPasswordExempt | kOperator | kWrites;
+    for (std::size_t i = 1; i < kCommands.size(); ++i) {
+        const auto& a = kCommands[i - 1];
+        const auto& b = kCommands[i];
+        if (a.command != b.command) continue;
+        if ((a.flags & kPerCommand) != (b.flags & kPerCommand) || a.families != b.families ||
+            (a.decode == nullptr) != (b.decode == nullptr))
+            return false;
+    }
+    return true;
+}
+static_assert(per_command_flags_agree(), "rows of one command must share flags, families and decoder presence");
 
 }  // namespace
 
@@ -99,17 +139,10 @@ const CommandSpec* find_command(std::uint16_t command, std::uint16_t subcommand)
     return &*it;
 }
 
-bool is_known_command(std::uint16_t command) {
-    return std::any_of(kCommands.begin(), kCommands.end(), [&](const CommandSpec& row) { return row.command == command; });
-}
-
-bool is_iqr_device_subcommand(std::uint16_t command, std::uint16_t subcommand) {
-    constexpr std::array kDeviceCommands = {std::uint16_t{0x0401}, std::uint16_t{0x1401}, std::uint16_t{0x0403},
-                                            std::uint16_t{0x1402}, std::uint16_t{0x0406}, std::uint16_t{0x1406},
-                                            std::uint16_t{0x0801}};
-    bool device_command = std::find(kDeviceCommands.begin(), kDeviceCommands.end(), command) != kDeviceCommands.end();
-    auto form = subcommand & 0xFF7F;   // 008x: the same forms with the extension specification
-    return device_command && (form == 0x0002 || form == 0x0003);
+const CommandSpec* find_any_row(std::uint16_t command) {
+    auto it = std::lower_bound(kCommands.begin(), kCommands.end(), command,
+                               [](const CommandSpec& row, std::uint16_t key) { return row.command < key; });
+    return it != kCommands.end() && it->command == command ? &*it : nullptr;
 }
 
 }  // namespace slmp::protocol

@@ -1,6 +1,9 @@
 // The one command table: each row is a (command, subcommand) the simulator
-// serves, the handler that serves it and how it addresses devices.
-// Anything not in the table gets the profile's "not supported" end code.
+// serves, with every fact about it — the handler that executes it, the
+// decoder that turns its request data into operands, how it addresses
+// devices, and the flags the request path asks (password-exempt, operator
+// command, writes memory, control CPU only, which port families accept it).
+// Nothing outside this table names a command code.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +14,7 @@
 #include "protocol/end_code.hpp"
 #include "protocol/engine.hpp"
 #include "protocol/fields.hpp"
+#include "protocol/request.hpp"
 
 namespace slmp::protocol {
 
@@ -19,37 +23,71 @@ enum class Access : std::uint8_t { None, Bits, Words };
 
 struct CommandSpec;
 
-// What a handler gets. It reads fields from `in`, writes response data to
-// `out`, and returns the end code (Ok, or the error; `out` is dropped then).
+// What a handler gets. It reads the decoded operands (device commands) or
+// fields from `in` (the others), writes response data to `out`, and returns
+// the end code (Ok, or the error; `out` is dropped then).
 struct CommandContext {
     devicemodel::Cpu& cpu;         // the CPU the request's module I/O number selects
     const CpuSet& cpus;            // every CPU of the station (U3E1\G reaches CPU No.2)
     const FrameHeader& header;
     const CommandSpec& spec;
+    const Operands& operands;      // what the row's decoder read (empty without one)
     Session& session;
-    FieldReader& in;
+    FieldReader& in;               // the request data after the subcommand (rows without a decoder)
     FieldWriter& out;
     bool restarted = false;        // Remote RESET succeeded: no response, every connection closes
 };
 
+// What a decoder gets: the request data after the subcommand, the row, and
+// the profile whose limits a port enforces while it reads the fields.
+struct DecodeContext {
+    FieldReader& in;
+    const CommandSpec& spec;
+    const devicemodel::CpuProfile& profile;
+    Operands& out;
+};
+
 using Handler = EndCode (*)(CommandContext&);
+using Decoder = void (*)(DecodeContext&);
+
+// Per-row flags (a bit set).
+enum Flag : std::uint8_t {
+    kExtended = 1 << 0,        // 008x: devices in the extended layout (Appendix 1)
+    kControlCpuOnly = 1 << 1,  // refused for CPU No.2–4 of a multi-CPU system (Appendix 3)
+    kPasswordExempt = 1 << 2,  // served on a connection the remote password locks (§6)
+    kOperator = 1 << 3,        // changes the CPU's operating state or lock: logged at info
+    kWrites = 1 << 4,          // writes device or buffer memory
+};
+
+// The port families that serve a command (a bit per devicemodel::Family).
+using Families = std::uint8_t;
+constexpr Families family_bit(devicemodel::Family f) { return static_cast<Families>(1u << static_cast<unsigned>(f)); }
 
 struct CommandSpec {
     std::uint16_t command;
     std::uint16_t subcommand;
     std::string_view name;
     Handler handler;
+    Decoder decode = nullptr;      // device commands: request data -> Operands, before the scenario hook
     DeviceForm form = DeviceForm::Q;
     Access access = Access::None;
-    bool extended = false;         // 008x: devices in the extended layout (Appendix 1)
-    bool control_cpu_only = false; // refused for CPU No.2–4 of a multi-CPU system (Appendix 3)
+    std::uint8_t flags = 0;
+    Families families = 0xFF;      // every family unless the row says otherwise
+
+    bool extended() const { return flags & kExtended; }
+    bool control_cpu_only() const { return flags & kControlCpuOnly; }
+    bool password_exempt() const { return flags & kPasswordExempt; }
+    bool operator_command() const { return flags & kOperator; }
+    bool writes() const { return flags & kWrites; }
+    bool served_by(devicemodel::Family family) const { return families & family_bit(family); }
+    // A device command: it names devices, and its 00□2/00□3 forms are the iQ-R ones.
+    bool device_command() const { return decode != nullptr; }
 };
 
 std::span<const CommandSpec> all_commands();
 const CommandSpec* find_command(std::uint16_t command, std::uint16_t subcommand);
-// Whether any row has this command (to log "unknown subcommand" apart from "unknown command").
-bool is_known_command(std::uint16_t command);
-// Device-access subcommands of the iQ-R family (00□2/00□3), which Q/L ports refuse.
-bool is_iqr_device_subcommand(std::uint16_t command, std::uint16_t subcommand);
+// Any row of this command (every row of a command shares its per-command
+// flags: families, operator, password-exempt); null when none has it.
+const CommandSpec* find_any_row(std::uint16_t command);
 
 }  // namespace slmp::protocol

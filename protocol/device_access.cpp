@@ -14,7 +14,7 @@ using Kind = DeviceExtension::Kind;
 
 // End code when an extension names a module, network or CPU that is not there
 // (chosen: real CPUs answer 4043 for Extend Unit module 0000 — hardware §2).
-constexpr EndCode kNoSuchModule = static_cast<EndCode>(0x4043);
+constexpr EndCode kNoSuchModule = EndCode::ModuleNotPresent;
 
 bool is_in(const DeviceSpec& spec, std::initializer_list<std::string_view> symbols) {
     return std::find(symbols.begin(), symbols.end(), spec.symbol) != symbols.end();
@@ -52,10 +52,6 @@ bool index_value(const devicemodel::Cpu& cpu, const Modifier& m, std::int64_t& v
 }
 
 }  // namespace
-
-DeviceField read_device(CommandContext& ctx, std::string_view what) {
-    return ctx.spec.extended ? ctx.in.extended_device(ctx.spec.form, what) : ctx.in.device(ctx.spec.form, what);
-}
 
 EndCode resolve(CommandContext& ctx, const DeviceField& field, Use use, Target& target) {
     const auto& profile = ctx.cpu.profile();

@@ -24,9 +24,6 @@ struct Target {
     const devicemodel::Cpu* owner = nullptr;   // set when `memory` is a CPU's own device memory
 };
 
-// Reads one device in the layout the command's subcommand selects (plain or 008x).
-DeviceField read_device(CommandContext& ctx, std::string_view what);
-
 // Resolves a field; Ok or the end code the profile gives for the problem.
 EndCode resolve(CommandContext& ctx, const DeviceField& field, Use use, Target& target);
 

@@ -1,5 +1,7 @@
-// The protocol core's one entry point: bytes in, an Outcome out. No I/O, no
-// threads; the TCP and UDP front ends and the unit tests all call process().
+// The protocol core: decode (bytes -> Request) and execute (Request + Session
+// -> Outcome). No I/O, no threads. The station calls decode, lets the scenario
+// hook look at the decoded Request, then calls execute; process() is the two
+// in one, for callers with no hook (unit tests, tools).
 #pragma once
 
 #include <array>
@@ -12,6 +14,7 @@
 #include "protocol/end_code.hpp"
 #include "protocol/fields.hpp"
 #include "protocol/frame.hpp"
+#include "protocol/request.hpp"
 
 namespace slmp::protocol {
 
@@ -67,8 +70,14 @@ public:
     void add_cpu(int number, devicemodel::Cpu& cpu) { cpus_.at(static_cast<std::size_t>(number - 1)) = &cpu; }
     const CpuSet& cpus() const { return cpus_; }
 
-    // Looks at the start of `input` and handles at most one frame.
-    Outcome process(std::span<const std::uint8_t> input, DataCodePolicy policy, Session& session);
+    // Decodes the frame at the start of `input` (at most one); touches no memory.
+    Request decode(std::span<const std::uint8_t> input, DataCodePolicy policy) const;
+    // Serves a decoded request: the port's refusals, route, password, then the handler.
+    Outcome execute(const Request& request, Session& session);
+    // decode + execute.
+    Outcome process(std::span<const std::uint8_t> input, DataCodePolicy policy, Session& session) {
+        return execute(decode(input, policy), session);
+    }
 
     devicemodel::Cpu& cpu() { return cpu_; }
     const EngineOptions& options() const { return options_; }

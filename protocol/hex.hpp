@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace slmp::protocol {
@@ -28,5 +29,15 @@ inline void append_hex(std::vector<std::uint8_t>& out, std::uint32_t value, unsi
     static constexpr char kDigits[] = "0123456789ABCDEF";
     for (unsigned i = digits; i-- > 0;) out.push_back(static_cast<std::uint8_t>(kDigits[(value >> (4 * i)) & 0xF]));
 }
+
+// `digits` upper-case hex digits of `value` as text: "0401", "C059".
+inline std::string hex_text(std::uint32_t value, unsigned digits) {
+    std::vector<std::uint8_t> text;
+    append_hex(text, value, digits);
+    return std::string(text.begin(), text.end());
+}
+
+// A command, subcommand or end code as the manuals and the log lines write it.
+inline std::string hex4(std::uint16_t value) { return hex_text(value, 4); }
 
 }  // namespace slmp::protocol

@@ -6,12 +6,6 @@
 
 namespace slmp::scenarios {
 
-std::string hex4(std::uint16_t value) {
-    std::vector<std::uint8_t> text;
-    protocol::append_hex(text, value, 4);
-    return std::string(text.begin(), text.end());
-}
-
 std::string_view to_string(FaultKind kind) {
     switch (kind) {
         case FaultKind::EndCode: return "end_code";
@@ -47,28 +41,30 @@ std::vector<FaultStats> FaultSet::stats() const {
     return list;
 }
 
-bool FaultSet::matches(const Fault& fault, const RequestView& r) {
+bool FaultSet::matches(const Fault& fault, const Incoming& incoming) {
+    const auto& r = incoming.request;
     const auto& m = fault.match;
     auto listed = [](const std::vector<std::uint16_t>& list, std::uint16_t v) {
         return list.empty() || std::find(list.begin(), list.end(), v) != list.end();
     };
     if ((!m.commands.empty() || !m.subcommands.empty()) && !r.has_command) return false;
     if (!listed(m.commands, r.command) || !listed(m.subcommands, r.subcommand)) return false;
-    if (m.access != Access::Any && r.access != m.access) return false;
+    if (m.access != Access::Any && incoming.access() != m.access) return false;
     if (!m.devices.empty() && !touches(r, m.devices)) return false;
     if (m.frame && r.header.kind != *m.frame) return false;
     if (m.code && r.header.codec != *m.code) return false;
-    if (m.transport && r.transport != *m.transport) return false;
-    if (m.connection && r.connection != *m.connection) return false;
-    if (m.client && r.client != *m.client) return false;
+    if (m.transport && incoming.peer.transport != *m.transport) return false;
+    if (m.connection && incoming.connection != *m.connection) return false;
+    if (m.client && incoming.peer.address != *m.client) return false;
     return true;
 }
 
-FaultDecision FaultSet::decide(const RequestView& request, double now_ms, const EventSink& log) {
+FaultDecision FaultSet::decide(const Incoming& incoming, double now_ms, const EventSink& log) {
+    const auto& request = incoming.request;
     FaultDecision d;
     for (auto& e : entries_) {
         const auto& f = *e.fault;
-        if (!e.enabled || now_ms < f.from_ms || now_ms >= f.until_ms || !matches(f, request)) continue;
+        if (!e.enabled || now_ms < f.from_ms || now_ms >= f.until_ms || !matches(f, incoming)) continue;
         if (++e.matched <= f.skip) continue;
         if (f.count && e.fired >= f.count) continue;
         // The draw happens for every eligible request, fired or not, so the
@@ -106,8 +102,9 @@ FaultDecision FaultSet::decide(const RequestView& request, double now_ms, const 
         }
         if (log)
             log(EventLevel::Info, "fault '" + e.name + "' (" + std::string(to_string(a.kind)) + ") fired on " +
-                                      (request.has_command ? hex4(request.command) + "/" + hex4(request.subcommand) : std::string("a request")) +
-                                      (request.peer.empty() ? "" : " from " + request.peer) + " (" + std::to_string(e.fired) +
+                                      (request.has_command ? protocol::hex4(request.command) + "/" + protocol::hex4(request.subcommand)
+                                                           : std::string("a request")) +
+                                      incoming.from() + " (" + std::to_string(e.fired) +
                                       (e.fired == 1 ? " time)" : " times)"));
     }
     return d;
@@ -129,7 +126,7 @@ void corrupt(std::vector<std::uint8_t>& response, const protocol::FrameHeader& r
             } else {
                 std::string text(response.begin() + static_cast<long>(end - 4), response.begin() + static_cast<long>(end));
                 auto v = static_cast<std::uint16_t>(std::stoul(text, nullptr, 16) + action.bytes);
-                auto digits = hex4(v);
+                auto digits = protocol::hex4(v);
                 std::copy(digits.begin(), digits.end(), response.begin() + static_cast<long>(end - 4));
             }
             return;

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "scenarios/events.hpp"
-#include "scenarios/request_view.hpp"
+#include "scenarios/incoming.hpp"
 #include "scenarios/rng.hpp"
 #include "scenarios/scenario.hpp"
 
@@ -55,7 +55,7 @@ public:
     // `seed` per fault: each has its own random stream (Rng::stream).
     void add(const Fault& fault, const std::string& source, std::uint64_t seed, const std::string& scenario = {});
 
-    FaultDecision decide(const RequestView& request, double now_ms, const EventSink& log);
+    FaultDecision decide(const Incoming& incoming, double now_ms, const EventSink& log);
     // Turns a fault on or off by id (trigger actions) or by its stats name
     // (the HTTP API: "<file>#/faults/2" for one without an id); false when there is none.
     bool enable(const std::string& id, bool on);
@@ -71,14 +71,12 @@ private:
         std::uint64_t matched = 0;
         std::uint64_t fired = 0;
     };
-    static bool matches(const Fault& fault, const RequestView& request);
+    static bool matches(const Fault& fault, const Incoming& incoming);
 
     std::vector<Entry> entries_;
 };
 
 std::string_view to_string(FaultKind kind);
-// "0401": a code as the manuals and the log lines write it.
-std::string hex4(std::uint16_t value);
 
 // The response bytes after the decision's corruptions (in order).
 void corrupt(std::vector<std::uint8_t>& response, const protocol::FrameHeader& request, const FaultAction& action, Rng& rng);

@@ -4,6 +4,7 @@
 
 #include "config/config.hpp"
 #include "protocol/error_response.hpp"
+#include "protocol/hex.hpp"
 #include "scenarios/check_devices.hpp"
 #include "scenarios/loader.hpp"
 #include "scenarios/device_values.hpp"
@@ -83,16 +84,16 @@ void ScenarioRunner::scan(TimePoint now) {
     for (const auto* t : fired) run(*t);
 }
 
-Plan ScenarioRunner::before(RequestView view, std::span<const std::uint8_t> input) {
+Plan ScenarioRunner::before(const Incoming& incoming, std::span<const std::uint8_t> input) {
     Plan plan;
-    plan.request = std::move(view);
-    const auto& r = plan.request;
-    if (!r.complete) return plan;
+    plan.incoming = &incoming;
+    const auto& r = incoming.request;
+    if (!r.complete()) return plan;
     if (!powered_) {   // UDP while the power is off (TCP ports are closed)
         plan.silent = true;
         return plan;
     }
-    plan.decision = faults_.decide(r, now_ms_, log_);
+    plan.decision = faults_.decide(incoming, now_ms_, log_);
     auto& d = plan.decision;
     if (d.power_cycle_ms) {   // the power fails before the CPU sees the request
         power_cycle(*d.power_cycle_ms, "fault");
@@ -118,7 +119,7 @@ Plan ScenarioRunner::before(RequestView view, std::span<const std::uint8_t> inpu
 // The first scenario with a recording that holds the request answers it; a
 // miss goes by that scenario's on_miss.
 void ScenarioRunner::replay(Plan& plan, std::span<const std::uint8_t> frame) {
-    const auto& r = plan.request;
+    const auto& r = plan.incoming->request;
     for (std::size_t i = 0; i < replays_.size(); ++i) {
         if (!replays_[i]) continue;
         auto a = replays_[i]->answer(frame, r.header);
@@ -131,12 +132,12 @@ void ScenarioRunner::replay(Plan& plan, std::span<const std::uint8_t> frame) {
     for (std::size_t i = 0; i < replays_.size(); ++i) {
         if (!replays_[i]) continue;
         const auto& spec = *scenarios_[i].replay;
-        auto what = r.has_command ? hex4(r.command) + "/" + hex4(r.subcommand) : std::string("request");
+        auto what = r.has_command ? protocol::hex4(r.command) + "/" + protocol::hex4(r.subcommand) : std::string("request");
         if (log_)
             log_(EventLevel::Warn, "replay: the recording holds no " + what + " like this one" +
-                                       (r.peer.empty() ? "" : " from " + r.peer) + "; " +
+                                       plan.incoming->from() + "; " +
                                        (spec.on_miss == ReplaySpec::Miss::Simulate ? "the simulator answers it"
-                                        : spec.on_miss == ReplaySpec::Miss::EndCode ? "answered with " + hex4(protocol::raw(spec.miss_code))
+                                        : spec.on_miss == ReplaySpec::Miss::EndCode ? "answered with " + protocol::hex4(protocol::raw(spec.miss_code))
                                                                                     : "not answered"));
         if (spec.on_miss == ReplaySpec::Miss::EndCode)
             plan.answer = protocol::encode_error_response(r.header, r.command, r.subcommand, spec.miss_code);
@@ -150,10 +151,10 @@ void ScenarioRunner::after(Plan& plan, const protocol::Outcome& outcome, std::ve
     const auto& d = plan.decision;
     if (plan.pass()) {
         std::vector<const Trigger*> fired;
-        triggers_.request(plan.request, outcome.end_code, fired);
+        triggers_.request(*plan.incoming, outcome.end_code, fired);
         for (const auto* t : fired) run(*t);
     }
-    for (const auto& c : d.corruptions) corrupt(response, plan.request.header, c, corruption_rng_);
+    for (const auto& c : d.corruptions) corrupt(response, plan.incoming->request.header, c, corruption_rng_);
     plan.delivery.delay = micros(d.delay_ms);
     if (d.split) {
         plan.delivery.pieces = split_sizes(response.size(), *d.split);
@@ -184,7 +185,7 @@ void ScenarioRunner::run(const Trigger& trigger) {
                        },
                        [&](const ErrorAction& a) {
                            runtime.raise_error(memory, a.error);
-                           info("CPU error " + hex4(a.error.code) + (a.error.stop ? " (stop error)" : " (continuation error)"));
+                           info("CPU error " + protocol::hex4(a.error.code) + (a.error.stop ? " (stop error)" : " (continuation error)"));
                        },
                        [&](const ClearErrorAction&) {
                            // As Clear Error 1617: a stop error stays until a power cycle or Remote RESET.

@@ -19,7 +19,7 @@
 #include "scenarios/faults.hpp"
 #include "scenarios/logic.hpp"
 #include "scenarios/replay.hpp"
-#include "scenarios/request_view.hpp"
+#include "scenarios/incoming.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/timeline.hpp"
 #include "scenarios/triggers.hpp"
@@ -42,7 +42,7 @@ protected:
 
 // What the server does with one request.
 struct Plan {
-    RequestView request;
+    const Incoming* incoming = nullptr;  // what before() saw; the caller keeps it until after()
     FaultDecision decision;
     // Answer without the CPU: a forced end code or a recorded response.
     std::optional<std::vector<std::uint8_t>> answer;
@@ -64,9 +64,9 @@ public:
     // After each CPU scan, with the scan's time.
     void scan(TimePoint now);
 
-    // Before the engine. `view` comes from view_request() plus who sent it.
-    // `input` starts with the request frame.
-    Plan before(RequestView view, std::span<const std::uint8_t> input);
+    // Before the engine executes `incoming` (decoded once by the station);
+    // `input` starts with the request frame. `incoming` must outlive after().
+    Plan before(const Incoming& incoming, std::span<const std::uint8_t> input);
     // After the engine (or the forced answer): traffic triggers, corruption,
     // the delivery plan. `response` may be changed.
     void after(Plan& plan, const protocol::Outcome& outcome, std::vector<std::uint8_t>& response);

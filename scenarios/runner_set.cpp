@@ -60,17 +60,17 @@ void RunnerSet::scan(TimePoint now) {
     for (auto& r : runners_) r->scan(now);
 }
 
-Plan RunnerSet::before(const RequestView& view, std::span<const std::uint8_t> input) {
+Plan RunnerSet::before(const Incoming& incoming, std::span<const std::uint8_t> input) {
     consulted_.clear();
     std::vector<std::string> fired;
     for (auto& r : runners_) {
-        consulted_.push_back(r->before(view, input));
+        consulted_.push_back(r->before(incoming, input));
         const auto& plan = consulted_.back();
         fired.insert(fired.end(), plan.decision.fired.begin(), plan.decision.fired.end());
         if (!plan.pass()) break;
     }
     Plan merged;
-    if (consulted_.empty()) merged.request = view;
+    if (consulted_.empty()) merged.incoming = &incoming;
     else merged = consulted_.back();   // the deciding plan, or the last (passing) one
     merged.decision.fired = std::move(fired);
     return merged;

@@ -35,7 +35,7 @@ public:
 
     bool empty() const { return runners_.empty(); }
     void scan(TimePoint now);
-    Plan before(const RequestView& view, std::span<const std::uint8_t> input);
+    Plan before(const Incoming& incoming, std::span<const std::uint8_t> input);
     void after(Plan& plan, const protocol::Outcome& outcome, std::vector<std::uint8_t>& response);
 
     // What runs, in load order, with the time since each runner's first scan.

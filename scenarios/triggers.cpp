@@ -42,7 +42,8 @@ void TriggerSet::scan(const devicemodel::DeviceMemory& memory, double now_ms, st
     }
 }
 
-void TriggerSet::request(const RequestView& r, protocol::EndCode end_code, std::vector<const Trigger*>& fired) {
+void TriggerSet::request(const Incoming& incoming, protocol::EndCode end_code, std::vector<const Trigger*>& fired) {
+    const auto& r = incoming.request;
     for (auto& s : states_) {
         const auto* t = std::get_if<TrafficCondition>(&s.trigger->when);
         if (!t || exhausted(s)) continue;
@@ -50,8 +51,8 @@ void TriggerSet::request(const RequestView& r, protocol::EndCode end_code, std::
             return list.empty() || std::find(list.begin(), list.end(), v) != list.end();
         };
         if (!r.has_command || !listed(t->commands, r.command) || !listed(t->subcommands, r.subcommand)) continue;
-        if (t->client && r.client != *t->client) continue;
-        if (t->access != Access::Any && (r.access != t->access || end_code != protocol::EndCode::Ok)) continue;
+        if (t->client && incoming.peer.address != *t->client) continue;
+        if (t->access != Access::Any && (incoming.access() != t->access || end_code != protocol::EndCode::Ok)) continue;
         if (!t->devices.empty() && !touches(r, t->devices)) continue;
         ++s.matches;
         if (t->nth && s.matches != t->nth) continue;

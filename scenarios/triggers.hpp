@@ -13,7 +13,7 @@
 
 #include "devicemodel/device_memory.hpp"
 #include "protocol/end_code.hpp"
-#include "scenarios/request_view.hpp"
+#include "scenarios/incoming.hpp"
 #include "scenarios/scenario.hpp"
 
 namespace slmp::scenarios {
@@ -25,7 +25,7 @@ public:
     // Device and time conditions, once per scan. Appends what fired.
     void scan(const devicemodel::DeviceMemory& memory, double now_ms, std::vector<const Trigger*>& fired);
     // Traffic conditions, for a request the CPU answered with `end_code`.
-    void request(const RequestView& request, protocol::EndCode end_code, std::vector<const Trigger*>& fired);
+    void request(const Incoming& incoming, protocol::EndCode end_code, std::vector<const Trigger*>& fired);
 
 private:
     struct State {

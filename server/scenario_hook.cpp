@@ -1,10 +1,12 @@
 #include "server/scenario_hook.hpp"
 
+#include <charconv>
+
 #include <spdlog/spdlog.h>
 
 #include "config/config.hpp"
 #include "scenarios/pcap_writer.hpp"
-#include "scenarios/request_view.hpp"
+#include "scenarios/incoming.hpp"
 
 namespace slmp::server {
 
@@ -104,21 +106,24 @@ Handled ScenarioHook::process(protocol::Engine& engine, std::span<const std::uin
         handled.outcome = engine.process(input, policy, session);
         return handled;
     }
+    // Decoded once: the scenarios match this Request, and the engine executes it.
+    scenarios::Incoming incoming{engine.decode(input, policy), {}, 0};
     scenarios::Plan plan;
     if (!runners_.empty()) {
-        auto view = scenarios::view_request(input, policy, engine.options().max_frame_bytes, engine.cpu().profile());
-        view.transport = link.transport;
-        view.peer = std::string(link.peer);
         const auto address = peer_address(link.peer);
-        view.client = std::string(address.substr(0, address.rfind(':')));
+        const auto colon = address.rfind(':');
+        incoming.peer.transport = link.transport;
+        incoming.peer.address = std::string(address.substr(0, colon));
+        if (colon != std::string_view::npos)
+            std::from_chars(address.data() + colon + 1, address.data() + address.size(), incoming.peer.port);
         if (auto it = ordinals_.find(session.id); link.transport == Transport::Tcp && it != ordinals_.end())
-            view.connection = it->second;
-        plan = runners_.before(view, input);
+            incoming.connection = it->second;
+        plan = runners_.before(incoming, input);
     }
     auto& outcome = handled.outcome;
-    const auto& request = plan.request;
-    if (runners_.empty() || !request.complete || plan.pass()) {
-        outcome = engine.process(input, policy, session);
+    const auto& request = incoming.request;
+    if (runners_.empty() || !request.complete() || plan.pass()) {
+        outcome = engine.execute(request, session);
     } else {
         // The scenario answers (or not) instead of the CPU.
         outcome.consumed = request.size;
@@ -137,7 +142,7 @@ Handled ScenarioHook::process(protocol::Engine& engine, std::span<const std::uin
                                                                 : ": not answered");
         }
     }
-    if (!runners_.empty() && request.complete && outcome.action != Outcome::Action::NeedMore) runners_.after(plan, outcome, outcome.response);
+    if (!runners_.empty() && request.complete() && outcome.action != Outcome::Action::NeedMore) runners_.after(plan, outcome, outcome.response);
     handled.delivery = plan.delivery;
     handled.reset = plan.reset;
     if (!recorders_.empty() && outcome.action != Outcome::Action::NeedMore) {

@@ -29,8 +29,8 @@ struct ByteWindow {
 // head address is 0 (chosen: the manual's table has no entry for a CPU).
 EndCode locate(CommandContext& ctx, std::uint32_t address, std::uint16_t bytes, std::uint16_t module_number,
                ByteWindow& window) {
-    if (module_number == 0x0000) return static_cast<EndCode>(0x4043);
-    if (module_number == 0x03FF) return static_cast<EndCode>(0x4080);
+    if (module_number == 0x0000) return EndCode::ModuleNotPresent;
+    if (module_number == 0x03FF) return EndCode::ModuleNotAccessible;
     std::uint32_t head = 0;
     if (module_number >= 0x03E0 && module_number <= 0x03E3) {
         auto* cpu = ctx.cpus[module_number - 0x03E0u];
@@ -39,7 +39,7 @@ EndCode locate(CommandContext& ctx, std::uint32_t address, std::uint16_t bytes, 
         window.memory = &module->memory;
         head = module->head_address;
     }
-    if (!window.memory) return static_cast<EndCode>(0x4043);
+    if (!window.memory) return EndCode::ModuleNotPresent;
     if (bytes < 2 || bytes > kMaxExtendUnitBytes) return EndCode::WordPointsOverLimit;
     if (address < head) return end_code(ctx.cpu.profile().out_of_range_code);
     window.first_byte = address - head;

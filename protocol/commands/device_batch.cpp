@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "protocol/commands/handlers.hpp"
+#include "protocol/commands/limits.hpp"
 #include "protocol/device_access.hpp"
 
 namespace slmp::protocol::commands {
@@ -24,17 +25,18 @@ namespace {
 using devicemodel::Unit;
 
 // Steps 2–5 of the check order above.
-EndCode check(CommandContext& ctx, const DeviceField& device, std::uint16_t points, bool write, Target& target) {
+EndCode check(CommandContext& ctx, const DeviceOperand& device, bool write, Target& target) {
     const auto& profile = ctx.cpu.profile();
-    if (auto code = resolve(ctx, device, write ? Use::BatchWrite : Use::BatchRead, target); code != EndCode::Ok)
+    if (auto code = resolve(ctx, device.field, write ? Use::BatchWrite : Use::BatchRead, target); code != EndCode::Ok)
         return code;
     const auto& spec = *target.spec;
     const bool bit_units = ctx.spec.access == Access::Bits;
     if (bit_units && spec.unit != Unit::Bit) return end_code(profile.bad_unit_code);
 
     const auto& limit = !bit_units ? profile.batch_words
-                        : ctx.in.codec() == Codec::Binary ? profile.batch_bits_binary
-                                                          : profile.batch_bits_ascii;
+                        : ctx.header.codec == Codec::Binary ? profile.batch_bits_binary
+                                                            : profile.batch_bits_ascii;
+    const auto points = device.points;
     if (points == 0 || points > limit.max) return end_code(limit.end_code);
     if (!bit_units && points % devicemodel::words_per_device(spec) != 0) return end_code(profile.batch_words.end_code);
 
@@ -43,16 +45,36 @@ EndCode check(CommandContext& ctx, const DeviceField& device, std::uint16_t poin
     return EndCode::Ok;
 }
 
+// Steps 1–5 for both commands: the target of the one operand, or the end code.
+EndCode checked_target(CommandContext& ctx, bool write, Target& target) {
+    const auto& ops = ctx.operands;
+    if (ops.failed_before_checks()) return ops.error;
+    if (auto code = check(ctx, ops.devices.front(), write, target); code != EndCode::Ok) return code;
+    return ops.error;   // step 6: the write data and what is left over
+}
+
 }  // namespace
 
-EndCode batch_read(CommandContext& ctx) {
-    auto device = read_device(ctx, "start device");
-    auto points = ctx.in.u16("device points");
-    if (!ctx.in.ok()) return ctx.in.error();
-    Target target;
-    if (auto code = check(ctx, device, points, false, target); code != EndCode::Ok) return code;
-    if (!ctx.in.finish()) return ctx.in.error();
+// Step 1, and the data of step 6 (after the checks).
+void decode_batch(DecodeContext& d) {
+    DeviceOperand device;
+    device.field = read_device(d, "start device");
+    device.points = d.in.u16("device points");
+    if (!d.in.ok()) return fail_field(d);
+    const bool bit_units = d.spec.access == Access::Bits;
+    device.unit = bit_units ? DeviceOperand::Unit::Bit : DeviceOperand::Unit::Word;
+    if (d.spec.writes()) {
+        if (bit_units) device.bits = d.in.bits(device.points, "write data");
+        else device.words = d.in.words(device.points, "write data");
+    }
+    d.out.devices.push_back(std::move(device));
+    if (!d.in.finish()) fail_field(d, true);
+}
 
+EndCode batch_read(CommandContext& ctx) {
+    Target target;
+    if (auto code = checked_target(ctx, false, target); code != EndCode::Ok) return code;
+    const auto points = ctx.operands.devices.front().points;
     const auto& memory = *target.memory;
     if (ctx.spec.access == Access::Bits) {
         std::vector<std::uint8_t> bits(points);
@@ -67,21 +89,15 @@ EndCode batch_read(CommandContext& ctx) {
 }
 
 EndCode batch_write(CommandContext& ctx) {
-    auto device = read_device(ctx, "start device");
-    auto points = ctx.in.u16("device points");
-    if (!ctx.in.ok()) return ctx.in.error();
     Target target;
-    if (auto code = check(ctx, device, points, true, target); code != EndCode::Ok) return code;
-
+    if (auto code = checked_target(ctx, true, target); code != EndCode::Ok) return code;
+    const auto& device = ctx.operands.devices.front();
     auto& memory = *target.memory;
     if (ctx.spec.access == Access::Bits) {
-        auto bits = ctx.in.bits(points, "write data");
-        if (!ctx.in.finish()) return ctx.in.error();
-        for (std::uint32_t i = 0; i < points; ++i) memory.set_bit(*target.spec, target.number + i, bits[i] != 0);
+        for (std::uint32_t i = 0; i < device.points; ++i)
+            memory.set_bit(*target.spec, target.number + i, device.bits[i] != 0);
     } else {
-        auto words = ctx.in.words(points, "write data");
-        if (!ctx.in.finish()) return ctx.in.error();
-        memory.write_words(*target.spec, target.number, words);
+        memory.write_words(*target.spec, target.number, device.words);
     }
     return EndCode::Ok;
 }

@@ -19,77 +19,72 @@ namespace {
 
 using devicemodel::Unit;
 
-struct Block {
-    DeviceField field;
-    std::uint16_t points = 0;
-    bool bits = false;
-    std::vector<std::uint16_t> data;   // 1406 only
-    Target target;
-};
-
 // Reads the block counts and the blocks; `with_data` for 1406.
-EndCode read_blocks(CommandContext& ctx, bool with_data, std::vector<Block>& blocks) {
-    const auto& profile = ctx.cpu.profile();
-    auto word_blocks = ctx.in.u8("word device blocks");
-    auto bit_blocks = ctx.in.u8("bit device blocks");
-    if (!ctx.in.ok()) return ctx.in.error();
-    if (over(ctx, profile.block_count, std::uint64_t{word_blocks} + bit_blocks))
-        return over_limit_code(ctx, profile.block_count);
+void decode_blocks(DecodeContext& d, bool with_data) {
+    const auto& profile = d.profile;
+    auto word_blocks = d.in.u8("word device blocks");
+    auto bit_blocks = d.in.u8("bit device blocks");
+    if (!d.in.ok()) return fail_field(d);
+    if (over(d, profile.block_count, std::uint64_t{word_blocks} + bit_blocks)) fail(d, over_limit_code(d, profile.block_count));
     if (with_data && word_blocks > 0 && bit_blocks > 0 &&
         profile.mixed_block_write.kind == devicemodel::Refusal::Kind::EndCode)
-        return end_code(profile.mixed_block_write.end_code);
-    for (unsigned i = 0; i < word_blocks + bit_blocks && ctx.in.ok(); ++i) {
-        Block block;
-        block.bits = i >= word_blocks;
-        block.field = read_device(ctx, block.bits ? "bit device block" : "word device block");
-        block.points = ctx.in.u16("block points");
-        if (with_data) block.data = ctx.in.words(block.points, "block write data");
-        blocks.push_back(std::move(block));
+        fail(d, end_code(profile.mixed_block_write.end_code));
+    for (unsigned i = 0; i < word_blocks + bit_blocks && d.in.ok(); ++i) {
+        DeviceOperand block;
+        block.bit_block = i >= word_blocks;
+        block.field = read_device(d, block.bit_block ? "bit device block" : "word device block");
+        block.points = d.in.u16("block points");
+        if (with_data) block.words = d.in.words(block.points, "block write data");
+        if (d.in.ok()) d.out.devices.push_back(std::move(block));
     }
-    if (!ctx.in.finish()) return ctx.in.error();
-    return EndCode::Ok;
+    if (!d.in.finish()) fail_field(d);
 }
 
 // Totals, then every block's device.
-EndCode check_blocks(CommandContext& ctx, bool write, std::vector<Block>& blocks) {
+EndCode check_blocks(CommandContext& ctx, bool write, std::vector<Target>& targets) {
     const auto& profile = ctx.cpu.profile();
+    const auto& blocks = ctx.operands.devices;
     std::uint64_t total = 0;
     for (const auto& block : blocks) total += block.points;
     // 1406 counts a per-block overhead: 4 (Q form) or 9 (iQ-R form) (§6.8).
     if (write) total += blocks.size() * (ctx.spec.form == DeviceForm::Q ? 4 : 9);
     if (total > profile.block_points.max) return end_code(profile.block_points.end_code);
-    for (auto& block : blocks) {
+    for (const auto& block : blocks) {
         if (block.points == 0) return end_code(profile.block_points.end_code);
-        auto use = write ? Use::BlockWrite : Use::BlockRead;
-        if (auto code = resolve(ctx, block.field, use, block.target); code != EndCode::Ok) return code;
-        bool bit_device = block.target.spec->unit == Unit::Bit;
-        if (bit_device != block.bits) return end_code(profile.bad_unit_code);
-        if (!fits(block.target, devices_in_words(*block.target.spec, block.points)))
-            return end_code(profile.out_of_range_code);
+        Target target;
+        if (auto code = resolve(ctx, block.field, write ? Use::BlockWrite : Use::BlockRead, target); code != EndCode::Ok)
+            return code;
+        bool bit_device = target.spec->unit == Unit::Bit;
+        if (bit_device != block.bit_block) return end_code(profile.bad_unit_code);
+        if (!fits(target, devices_in_words(*target.spec, block.points))) return end_code(profile.out_of_range_code);
+        targets.push_back(target);
     }
     return EndCode::Ok;
 }
 
 }  // namespace
 
+void decode_block_read(DecodeContext& d) { decode_blocks(d, false); }
+void decode_block_write(DecodeContext& d) { decode_blocks(d, true); }
+
 EndCode block_read(CommandContext& ctx) {
-    std::vector<Block> blocks;
-    if (auto code = read_blocks(ctx, false, blocks); code != EndCode::Ok) return code;
-    if (auto code = check_blocks(ctx, false, blocks); code != EndCode::Ok) return code;
-    for (const auto& block : blocks) {
-        std::vector<std::uint16_t> words(block.points);
-        block.target.memory->read_words(*block.target.spec, block.target.number, words);
+    if (ctx.operands.error != EndCode::Ok) return ctx.operands.error;
+    std::vector<Target> targets;
+    if (auto code = check_blocks(ctx, false, targets); code != EndCode::Ok) return code;
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+        std::vector<std::uint16_t> words(ctx.operands.devices[i].points);
+        targets[i].memory->read_words(*targets[i].spec, targets[i].number, words);
         ctx.out.words(words);
     }
     return EndCode::Ok;
 }
 
 EndCode block_write(CommandContext& ctx) {
-    std::vector<Block> blocks;
-    if (auto code = read_blocks(ctx, true, blocks); code != EndCode::Ok) return code;
-    if (auto code = check_blocks(ctx, true, blocks); code != EndCode::Ok) return code;
-    for (const auto& block : blocks)
-        block.target.memory->write_words(*block.target.spec, block.target.number, block.data);
+    if (ctx.operands.error != EndCode::Ok) return ctx.operands.error;
+    std::vector<Target> targets;
+    if (auto code = check_blocks(ctx, true, targets); code != EndCode::Ok) return code;
+    for (std::size_t i = 0; i < targets.size(); ++i)
+        targets[i].memory->write_words(*targets[i].spec, targets[i].number, ctx.operands.devices[i].words);
     return EndCode::Ok;
 }
 

@@ -21,17 +21,7 @@ namespace slmp::protocol::commands {
 namespace {
 
 using devicemodel::Unit;
-
-struct Entry {
-    Target target;
-    std::uint32_t value = 0;
-};
-
-std::vector<DeviceField> read_devices(CommandContext& ctx, std::size_t count, std::string_view what) {
-    std::vector<DeviceField> fields;
-    for (std::size_t i = 0; i < count && ctx.in.ok(); ++i) fields.push_back(read_device(ctx, what));
-    return fields;
-}
+using OperandUnit = DeviceOperand::Unit;
 
 // Resolves every device of a list, each `words` words wide.
 EndCode resolve_all(CommandContext& ctx, const std::vector<DeviceField>& fields, unsigned words, Use use,
@@ -51,10 +41,7 @@ std::uint32_t read_value(const Target& t, unsigned words) {
     return w[0] | std::uint32_t{w[1]} << 16;
 }
 
-void write_value(const Target& t, unsigned words, std::uint32_t value) {
-    std::uint16_t w[2] = {static_cast<std::uint16_t>(value), static_cast<std::uint16_t>(value >> 16)};
-    t.memory->write_words(*t.spec, t.number, std::span<const std::uint16_t>(w, words));
-}
+void write_value(const Target& t, std::span<const std::uint16_t> words) { t.memory->write_words(*t.spec, t.number, words); }
 
 // The response of 0403 and 0802: word values, then double-word values.
 EndCode answer(CommandContext& ctx, const std::vector<DeviceField>& words, const std::vector<DeviceField>& dwords,
@@ -67,85 +54,110 @@ EndCode answer(CommandContext& ctx, const std::vector<DeviceField>& words, const
     return EndCode::Ok;
 }
 
+// The fields of the operands of one unit, in request order.
+std::vector<DeviceField> fields_of(const Operands& ops, OperandUnit unit) {
+    std::vector<DeviceField> fields;
+    for (const auto& d : ops.devices)
+        if (d.unit == unit) fields.push_back(d.field);
+    return fields;
+}
+
 // The request of 0403 and 0801: counts, then the word and double-word devices.
-EndCode read_device_list(CommandContext& ctx, const devicemodel::FormLimit& limit, std::vector<DeviceField>& words,
-                         std::vector<DeviceField>& dwords) {
-    auto word_points = ctx.in.u8("word access points");
-    auto dword_points = ctx.in.u8("double-word access points");
-    if (!ctx.in.ok()) return ctx.in.error();
-    if (over(ctx, limit, std::uint64_t{word_points} + dword_points)) return over_limit_code(ctx, limit);
-    words = read_devices(ctx, word_points, "word access device");
-    dwords = read_devices(ctx, dword_points, "double-word access device");
-    if (!ctx.in.finish()) return ctx.in.error();
-    return EndCode::Ok;
+void decode_device_list(DecodeContext& d, const devicemodel::FormLimit& limit) {
+    auto word_points = d.in.u8("word access points");
+    auto dword_points = d.in.u8("double-word access points");
+    if (!d.in.ok()) return fail_field(d);
+    if (over(d, limit, std::uint64_t{word_points} + dword_points)) fail(d, over_limit_code(d, limit));
+    for (unsigned i = 0; i < word_points + dword_points && d.in.ok(); ++i) {
+        const bool word = i < word_points;
+        auto field = read_device(d, word ? "word access device" : "double-word access device");
+        if (d.in.ok()) d.out.devices.push_back({field, word ? OperandUnit::Word : OperandUnit::DoubleWord, 1});
+    }
+    if (!d.in.finish()) fail_field(d);
 }
 
 }  // namespace
 
+void decode_random_read(DecodeContext& d) { decode_device_list(d, d.profile.random_read_points); }
+void decode_monitor(DecodeContext& d) { decode_device_list(d, d.profile.monitor_points); }
+
+void decode_random_write_words(DecodeContext& d) {
+    auto word_points = d.in.u8("word access points");
+    auto dword_points = d.in.u8("double-word access points");
+    if (!d.in.ok()) return fail_field(d);
+    // 12 per word point + 14 per double-word point (§6.4).
+    auto weight_sum = std::uint64_t{word_points} * 12 + std::uint64_t{dword_points} * 14;
+    if (over(d, d.profile.random_write_weight, weight_sum)) fail(d, over_limit_code(d, d.profile.random_write_weight));
+    for (unsigned i = 0; i < word_points + dword_points && d.in.ok(); ++i) {
+        const bool word = i < word_points;
+        DeviceOperand device{read_device(d, word ? "word access device" : "double-word access device"),
+                             word ? OperandUnit::Word : OperandUnit::DoubleWord, 1};
+        auto value = word ? d.in.u16("word data") : d.in.u32("double-word data");
+        device.words = {static_cast<std::uint16_t>(value)};
+        if (!word) device.words.push_back(static_cast<std::uint16_t>(value >> 16));
+        if (d.in.ok()) d.out.devices.push_back(std::move(device));
+    }
+    if (!d.in.finish()) fail_field(d);
+}
+
+void decode_random_write_bits(DecodeContext& d) {
+    auto points = d.in.u8("bit access points");
+    if (!d.in.ok()) return fail_field(d);
+    if (over(d, d.profile.random_write_bits, points)) fail(d, over_limit_code(d, d.profile.random_write_bits));
+    for (unsigned i = 0; i < points && d.in.ok(); ++i) {
+        DeviceOperand device{read_device(d, "bit access device"), OperandUnit::Bit, 1};
+        // Set/reset: 1 byte / 2 characters in the Q form, 2 bytes / 4 in the
+        // iQ-R form (§6.4); any nonzero value sets the bit.
+        auto state = d.spec.form == DeviceForm::Q ? d.in.u8("set/reset") : d.in.u16("set/reset");
+        device.bits = {static_cast<std::uint8_t>(state != 0)};
+        if (d.in.ok()) d.out.devices.push_back(std::move(device));
+    }
+    if (!d.in.finish()) fail_field(d);
+}
+
 EndCode random_read(CommandContext& ctx) {
-    std::vector<DeviceField> words, dwords;
-    if (auto code = read_device_list(ctx, ctx.cpu.profile().random_read_points, words, dwords); code != EndCode::Ok)
-        return code;
-    return answer(ctx, words, dwords, Use::RandomRead);
+    if (ctx.operands.error != EndCode::Ok) return ctx.operands.error;
+    return answer(ctx, fields_of(ctx.operands, OperandUnit::Word), fields_of(ctx.operands, OperandUnit::DoubleWord),
+                  Use::RandomRead);
 }
 
 EndCode random_write_words(CommandContext& ctx) {
-    const auto& profile = ctx.cpu.profile();
-    auto word_points = ctx.in.u8("word access points");
-    auto dword_points = ctx.in.u8("double-word access points");
-    if (!ctx.in.ok()) return ctx.in.error();
-    // 12 per word point + 14 per double-word point (§6.4).
-    auto weight_sum = std::uint64_t{word_points} * 12 + std::uint64_t{dword_points} * 14;
-    if (over(ctx, profile.random_write_weight, weight_sum)) return over_limit_code(ctx, profile.random_write_weight);
-
-    std::vector<DeviceField> fields;
-    std::vector<std::uint32_t> values;
-    for (unsigned i = 0; i < word_points + dword_points && ctx.in.ok(); ++i) {
-        fields.push_back(read_device(ctx, i < word_points ? "word access device" : "double-word access device"));
-        values.push_back(i < word_points ? ctx.in.u16("word data") : ctx.in.u32("double-word data"));
-    }
-    if (!ctx.in.finish()) return ctx.in.error();
-    std::vector<DeviceField> words(fields.begin(), fields.begin() + word_points);
-    std::vector<DeviceField> dwords(fields.begin() + word_points, fields.end());
+    const auto& ops = ctx.operands;
+    if (ops.error != EndCode::Ok) return ops.error;
     std::vector<Target> word_targets, dword_targets;
-    if (auto code = resolve_all(ctx, words, 1, Use::RandomWrite, word_targets); code != EndCode::Ok) return code;
-    if (auto code = resolve_all(ctx, dwords, 2, Use::RandomWrite, dword_targets); code != EndCode::Ok) return code;
-    for (std::size_t i = 0; i < word_targets.size(); ++i) write_value(word_targets[i], 1, values[i]);
-    for (std::size_t i = 0; i < dword_targets.size(); ++i) write_value(dword_targets[i], 2, values[word_points + i]);
+    if (auto code = resolve_all(ctx, fields_of(ops, OperandUnit::Word), 1, Use::RandomWrite, word_targets);
+        code != EndCode::Ok)
+        return code;
+    if (auto code = resolve_all(ctx, fields_of(ops, OperandUnit::DoubleWord), 2, Use::RandomWrite, dword_targets);
+        code != EndCode::Ok)
+        return code;
+    std::size_t w = 0, dw = 0;
+    for (const auto& device : ops.devices)
+        write_value(device.unit == OperandUnit::Word ? word_targets[w++] : dword_targets[dw++], device.words);
     return EndCode::Ok;
 }
 
 EndCode random_write_bits(CommandContext& ctx) {
     const auto& profile = ctx.cpu.profile();
-    auto points = ctx.in.u8("bit access points");
-    if (!ctx.in.ok()) return ctx.in.error();
-    if (over(ctx, profile.random_write_bits, points)) return over_limit_code(ctx, profile.random_write_bits);
-    std::vector<DeviceField> fields;
-    std::vector<bool> states;
-    for (unsigned i = 0; i < points && ctx.in.ok(); ++i) {
-        fields.push_back(read_device(ctx, "bit access device"));
-        // Set/reset: 1 byte / 2 characters in the Q form, 2 bytes / 4 in the
-        // iQ-R form (§6.4); any nonzero value sets the bit.
-        states.push_back((ctx.spec.form == DeviceForm::Q ? ctx.in.u8("set/reset") : ctx.in.u16("set/reset")) != 0);
-    }
-    if (!ctx.in.finish()) return ctx.in.error();
+    const auto& ops = ctx.operands;
+    if (ops.error != EndCode::Ok) return ops.error;
     std::vector<Target> targets;
-    for (const auto& field : fields) {
+    for (const auto& device : ops.devices) {
         Target target;
-        if (auto code = resolve(ctx, field, Use::RandomWrite, target); code != EndCode::Ok) return code;
+        if (auto code = resolve(ctx, device.field, Use::RandomWrite, target); code != EndCode::Ok) return code;
         if (target.spec->unit != Unit::Bit) return end_code(profile.bad_unit_code);
         if (!fits(target, 1)) return end_code(profile.out_of_range_code);
         targets.push_back(target);
     }
     for (std::size_t i = 0; i < targets.size(); ++i)
-        targets[i].memory->set_bit(*targets[i].spec, targets[i].number, states[i]);
+        targets[i].memory->set_bit(*targets[i].spec, targets[i].number, ops.devices[i].bits.front() != 0);
     return EndCode::Ok;
 }
 
 EndCode monitor_register(CommandContext& ctx) {
-    std::vector<DeviceField> words, dwords;
-    if (auto code = read_device_list(ctx, ctx.cpu.profile().monitor_points, words, dwords); code != EndCode::Ok)
-        return code;
+    if (ctx.operands.error != EndCode::Ok) return ctx.operands.error;
+    auto words = fields_of(ctx.operands, OperandUnit::Word);
+    auto dwords = fields_of(ctx.operands, OperandUnit::DoubleWord);
     // Validate now, so a bad registration is refused and the old one kept.
     std::vector<Target> unused;
     if (auto code = resolve_all(ctx, words, 1, Use::Monitor, unused); code != EndCode::Ok) return code;

@@ -1,4 +1,5 @@
-// Every command handler, one family per file in this folder.
+// Every command handler, one family per file in this folder, and the
+// decoders of the device commands (request data -> Operands, in decode()).
 #pragma once
 
 #include "protocol/command_table.hpp"
@@ -6,11 +7,16 @@
 namespace slmp::protocol::commands {
 
 // device_batch.cpp — Read 0401 / Write 1401, subcommands 0000–0003 and 0080–0083.
+void decode_batch(DecodeContext& d);
 EndCode batch_read(CommandContext& ctx);
 EndCode batch_write(CommandContext& ctx);
 
 // device_random.cpp — Read Random 0403, Write Random 1402 (words; bits),
 // Entry Monitor Device 0801, Execute Monitor 0802.
+void decode_random_read(DecodeContext& d);
+void decode_random_write_words(DecodeContext& d);
+void decode_random_write_bits(DecodeContext& d);
+void decode_monitor(DecodeContext& d);
 EndCode random_read(CommandContext& ctx);
 EndCode random_write_words(CommandContext& ctx);
 EndCode random_write_bits(CommandContext& ctx);
@@ -18,6 +24,8 @@ EndCode monitor_register(CommandContext& ctx);
 EndCode monitor_execute(CommandContext& ctx);
 
 // device_block.cpp — Read Block 0406 / Write Block 1406.
+void decode_block_read(DecodeContext& d);
+void decode_block_write(DecodeContext& d);
 EndCode block_read(CommandContext& ctx);
 EndCode block_write(CommandContext& ctx);
 

@@ -2,7 +2,9 @@
 // probability, time window), the forced end code's exact bytes in both codecs,
 // corruption, splitting, and the station effects (docs/scenarios.md "Faults").
 #include "protocol/client.hpp"
-#include "scenarios/request_view.hpp"
+#include <deque>
+
+#include "scenarios/incoming.hpp"
 #include "support/fixtures.hpp"
 #include "support/scenario_fixtures.hpp"
 
@@ -26,13 +28,12 @@ struct Rig {
         runner = std::make_unique<scenarios::ScenarioRunner>(std::move(list), cpu, nullptr, &station);
         runner->scan(at(0));
     }
+    // Decodes `frame` as the station does; the Incoming stays alive for after().
     scenarios::Plan plan(const Bytes& frame, const std::string& client = "127.0.0.1", std::uint64_t connection = 1,
                          scenarios::Transport transport = scenarios::Transport::Tcp) {
-        auto view = scenarios::view_request(frame, protocol::DataCodePolicy::Auto, 8192, cpu.profile());
-        view.client = client;
-        view.connection = connection;
-        view.transport = transport;
-        return runner->before(view, frame);
+        seen.push_back({protocol::Engine(cpu).decode(frame, protocol::DataCodePolicy::Auto), {transport, client, 50000, 5000},
+                        connection});
+        return runner->before(seen.back(), frame);
     }
     // The bytes the client would get: the forced answer or the engine's, after corruption.
     Bytes sent(const Bytes& frame) {
@@ -46,6 +47,7 @@ struct Rig {
     devicemodel::Cpu cpu;
     FakeStation station;
     std::unique_ptr<scenarios::ScenarioRunner> runner;
+    std::deque<scenarios::Incoming> seen;
 };
 
 const Bytes kRead3E = bytes("50 00 00 FF FF 03 00 0C 00 10 00 01 04 00 00 64 00 00 A8 01 00");   // 0401 D100 x1

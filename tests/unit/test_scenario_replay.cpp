@@ -5,7 +5,8 @@
 
 #include "scenarios/recording.hpp"
 #include "scenarios/replay.hpp"
-#include "scenarios/request_view.hpp"
+#include "scenarios/runner.hpp"
+#include "scenarios/incoming.hpp"
 #include "support/fixtures.hpp"
 #include "support/scenario_fixtures.hpp"
 
@@ -111,8 +112,8 @@ TEST_CASE("replay: a scenario answers from its recording, misses go by on_miss",
         std::vector<scenarios::Scenario> list{scenarios::load_scenario(dir / "replay.json")};
         scenarios::ScenarioRunner runner(std::move(list), cpu, nullptr);
         runner.scan(at(0));
-        auto view = scenarios::view_request(frame, protocol::DataCodePolicy::Auto, 8192, cpu.profile());
-        return runner.before(view, frame);
+        scenarios::Incoming incoming{protocol::Engine(cpu).decode(frame, protocol::DataCodePolicy::Auto), {}, 0};
+        return runner.before(incoming, frame);   // the plan is read only, never passed to after()
     };
     auto hit = run_with(R"({"file": "session.jsonl"})", kRead3E);
     REQUIRE(hit.answer);

@@ -2,7 +2,9 @@
 // first runner that keeps a request from the CPU decides, ids and names
 // unique across runners, each runner on its own clock (scenarios/runner_set.hpp).
 #include "config/config.hpp"
-#include "scenarios/request_view.hpp"
+#include <deque>
+
+#include "scenarios/incoming.hpp"
 #include "scenarios/runner_set.hpp"
 #include "support/fixtures.hpp"
 #include "support/scenario_fixtures.hpp"
@@ -22,8 +24,8 @@ struct Rig {
         set.add(std::move(list), cpu, nullptr, nullptr);
     }
     scenarios::Plan plan() {
-        auto view = scenarios::view_request(kRead3E, protocol::DataCodePolicy::Auto, 8192, cpu.profile());
-        return set.before(view, kRead3E);
+        seen.push_back({protocol::Engine(cpu).decode(kRead3E, protocol::DataCodePolicy::Auto), {}, 0});
+        return set.before(seen.back(), kRead3E);
     }
     std::vector<std::string> names() {
         std::vector<std::string> out;
@@ -32,6 +34,7 @@ struct Rig {
     }
     devicemodel::Cpu cpu;
     scenarios::RunnerSet set;
+    std::deque<scenarios::Incoming> seen;   // each plan's request, alive until after()
     int files = 0;
 };
 

@@ -2,7 +2,7 @@
 // traffic (command, writes to a range, the N-th request, client address) and
 // the actions they start (docs/scenarios.md "Triggers").
 #include "protocol/client.hpp"
-#include "scenarios/request_view.hpp"
+#include "scenarios/incoming.hpp"
 #include "support/fixtures.hpp"
 #include "support/scenario_fixtures.hpp"
 
@@ -14,10 +14,9 @@ namespace {
 // Runs one request through the runner's hook and the real engine, as the server does.
 protocol::Outcome handle(ScenarioRig& rig, const std::vector<std::uint8_t>& frame, const std::string& client = "127.0.0.1",
                          std::vector<std::uint8_t>* sent = nullptr) {
-    auto view = scenarios::view_request(frame, protocol::DataCodePolicy::Auto, 8192, rig.cpu.profile());
-    view.client = client;
-    view.connection = 1;
-    auto plan = rig.runner->before(view, frame);
+    scenarios::Incoming incoming{protocol::Engine(rig.cpu).decode(frame, protocol::DataCodePolicy::Auto),
+                                 {protocol::Transport::Tcp, client, 50000, 5000}, 1};
+    auto plan = rig.runner->before(incoming, frame);
     protocol::Outcome outcome;
     if (plan.pass()) {
         protocol::Session session;

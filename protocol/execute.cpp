@@ -1,0 +1,126 @@
+// execute: a decoded Request + the connection's Session -> Outcome. The
+// gates come first, in the order a real port applies them: the frame kind,
+// the header, the route, the remote password, the port's refusals, the
+// table; then the row's handler runs against the target CPU.
+#include <algorithm>
+#include <optional>
+#include <string>
+
+#include "protocol/command_table.hpp"
+#include "protocol/engine.hpp"
+#include "protocol/hex.hpp"
+#include "protocol/reply.hpp"
+
+namespace slmp::protocol {
+namespace {
+
+using devicemodel::CpuProfile;
+using devicemodel::Refusal;
+
+// Garbage, oversized frames and partial frames: no command was read.
+Outcome unframed(const Request& request, std::size_t max_frame_bytes) {
+    Outcome out;
+    out.consumed = request.size;
+    switch (request.frame) {
+        case Request::Frame::NeedMore:
+        case Request::Frame::Complete: out.consumed = 0; break;
+        case Request::Frame::Garbage:
+            out.action = Outcome::Action::Silent;
+            out.note = std::to_string(request.size) +
+                       " byte(s) that do not start an SLMP request frame for this port's data code "
+                       "(expected a 3E/4E subheader 5000/5400, binary or ASCII); skipped";
+            break;
+        case Request::Frame::TooLarge:
+            out.consumed = 0;
+            out.action = Outcome::Action::Close;
+            out.note = "request data length announces a " + std::to_string(request.size) + "-byte frame, over the " +
+                       std::to_string(max_frame_bytes) + "-byte maximum (max_request_bytes); closing the connection";
+            break;
+    }
+    return out;
+}
+
+// Monitoring timer, command or subcommand missing or not hex.
+Outcome bad_header(const Request& request, Reply& reply) {
+    const std::size_t unit = request.header.codec == Codec::Binary ? 1 : 2;
+    if (request.header.data_length < 6 * unit)
+        return reply.drop(Outcome::Action::Silent,
+                          "request data length " + std::to_string(request.header.data_length) +
+                              " is too short to hold the monitoring timer, command and subcommand; not answered");
+    return reply.error(request.header_error, "bad " + std::string(request.header_error_field));
+}
+
+std::string route_note(const Route& route) {
+    return "request for network " + hex_text(route.network, 2) + " station " + hex_text(route.station, 2) +
+           " module I/O " + hex4(route.module_io) + " multidrop " + hex_text(route.multidrop, 2) +
+           "; only the own station (00/FF/03FF/00) and its configured CPUs (module I/O 03E0-03E3) are served";
+}
+
+// Remote password (slmp-labels-remote-misc.md §6): a locked connection gets
+// C201 for everything but the rows that are exempt (Unlock 1630, Lock 1631).
+bool locked_out(const devicemodel::Cpu& cpu, const Session& session, std::uint16_t command) {
+    if (!cpu.runtime().password().configured() || session.password_unlocked) return false;
+    const auto* row = find_any_row(command);
+    return !row || !row->password_exempt();
+}
+
+// The port's own refusals, before the table is asked for the subcommand: a
+// command the port family does not serve (or the profile adds), a device
+// command in the iQ-R form on a port that has only the Q form.
+std::optional<Outcome> port_refusal(const CpuProfile& profile, const Request& request, Reply& reply) {
+    const auto* row = find_any_row(request.command);
+    const auto& extra = profile.unsupported_commands;
+    if ((row && !row->served_by(profile.family)) ||
+        std::find(extra.begin(), extra.end(), request.command) != extra.end())
+        return reply.error(end_code(profile.not_supported_code),
+                           "command " + hex4(request.command) + " is not supported by " + profile.name);
+    const auto form = request.subcommand & 0xFF7F;   // 008x: the same forms with the extension specification
+    if (row && row->device_command() && (form == 0x0002 || form == 0x0003) &&
+        profile.iqr_subcommands.kind != Refusal::Kind::Serve)
+        return reply.refuse(profile.iqr_subcommands, hex4(request.command) + "/" + hex4(request.subcommand) +
+                                                         " uses the iQ-R device form, which " + profile.name +
+                                                         " does not accept");
+    return std::nullopt;
+}
+
+}  // namespace
+
+Outcome Engine::execute(const Request& request, Session& session) {
+    if (!request.complete()) return unframed(request, options_.max_frame_bytes);
+    const auto& profile = cpu_.profile();
+    Reply reply(request);
+    if (request.header.kind == FrameKind::E4 && profile.frame_4e.kind != Refusal::Kind::Serve)
+        return reply.refuse(profile.frame_4e, "4E frame on a port of " + profile.name + ", which serves 3E only");
+    if (!request.has_command) return bad_header(request, reply);
+    if (request.route_error != EndCode::Ok) return reply.error(request.route_error, route_note(request.header.route));
+    if (locked_out(cpu_, session, request.command))
+        return reply.error(EndCode::RemotePasswordLocked,
+                           "this connection is locked by the remote password; send Unlock 1630 with the password first");
+    if (auto refused = port_refusal(profile, request, reply)) return std::move(*refused);
+
+    const auto* spec = request.spec;
+    if (!spec)
+        return reply.error(end_code(profile.not_supported_code),
+                           find_any_row(request.command)
+                               ? "unknown subcommand " + hex4(request.subcommand) + " for command " + hex4(request.command)
+                               : "unknown or unimplemented command " + hex4(request.command));
+    auto& target = *cpus_[request.target];
+    if (spec->control_cpu_only() && request.target != 0)
+        return reply.error(end_code(profile.not_supported_code),
+                           std::string(spec->name) + " cannot reach CPU No.2-4 of a multi-CPU system (Appendix 3)");
+
+    FieldReader in(request.header.codec, request.data, CodecOptions{profile.zr_ascii_hex});
+    FieldWriter out(request.header.codec, CodecOptions{target.profile().zr_ascii_hex});
+    CommandContext ctx{target, cpus_, request.header, *spec, request.operands, session, in, out};
+    auto code = spec->handler(ctx);
+    if (code != EndCode::Ok) {
+        auto field = code == request.operands.error ? request.operands.error_field : in.error_field();
+        auto why = std::string(spec->name);
+        if (!field.empty()) why += ": bad or missing field '" + std::string(field) + "'";
+        return reply.error(code, why);
+    }
+    if (ctx.restarted) return reply.drop(Outcome::Action::Restart, "");   // §5.6: no response on success
+    return reply.ok(out.bytes());
+}
+
+}  // namespace slmp::protocol

@@ -1,0 +1,51 @@
+#include "protocol/reply.hpp"
+
+#include "protocol/error_response.hpp"
+#include "protocol/hex.hpp"
+#include "protocol/message.hpp"
+
+namespace slmp::protocol {
+
+using devicemodel::Refusal;
+
+Reply::Reply(const Request& request) : header_(request.header) {
+    outcome_.consumed = request.size;
+    outcome_.command = request.command;
+    outcome_.subcommand = request.subcommand;
+}
+
+Outcome Reply::ok(std::span<const std::uint8_t> data) {
+    FieldWriter w(header_.codec);
+    w.u16(raw(EndCode::Ok));
+    w.raw(data);
+    outcome_.action = Outcome::Action::Respond;
+    outcome_.response = encode_frame(Direction::Response, header_.kind, header_.codec, header_.serial, header_.route,
+                                     w.bytes());
+    return std::move(outcome_);
+}
+
+Outcome Reply::error(EndCode code, std::string note) {
+    outcome_.end_code = code;
+    outcome_.note = hex4(raw(code)) + " (" + std::string(describe(code)) + "): " + note;
+    outcome_.action = Outcome::Action::Respond;
+    outcome_.response = encode_error_response(header_, outcome_.command, outcome_.subcommand, code);
+    return std::move(outcome_);
+}
+
+Outcome Reply::refuse(const Refusal& refusal, std::string note) {
+    switch (refusal.kind) {
+        case Refusal::Kind::EndCode: return error(end_code(refusal.end_code), std::move(note));
+        case Refusal::Kind::Close: return drop(Outcome::Action::Close, std::move(note) + "; closing the connection");
+        case Refusal::Kind::Silence:
+        case Refusal::Kind::Serve: break;
+    }
+    return drop(Outcome::Action::Silent, std::move(note) + "; not answered");
+}
+
+Outcome Reply::drop(Outcome::Action action, std::string note) {
+    outcome_.action = action;
+    outcome_.note = std::move(note);
+    return std::move(outcome_);
+}
+
+}  // namespace slmp::protocol
