@@ -1,10 +1,11 @@
 // Fault rules without sockets: matching, limits (skip, count, seeded
 // probability, time window), the forced end code's exact bytes in both codecs,
 // corruption, splitting, and the station effects (docs/scenarios.md "Faults").
-#include "protocol/client.hpp"
 #include <deque>
 
+#include "protocol/client.hpp"
 #include "scenarios/incoming.hpp"
+#include "support/device_commands.hpp"
 #include "support/fixtures.hpp"
 #include "support/scenario_fixtures.hpp"
 
@@ -231,4 +232,39 @@ TEST_CASE("faults: requests that are not whole frames pass untouched", "[scenari
     CHECK(rig.plan(Bytes(kRead3E.begin(), kRead3E.begin() + 10)).pass());
     CHECK(rig.plan(bytes("12 34 56")).pass());
     CHECK(rig.runner->fault_stats()[0].matched == 0);
+}
+
+// The fault sees the devices the decoder found in the Request the engine then
+// executes (no second parser): every write command that touches D100 fires it,
+// writes elsewhere and reads of D100 do not — binary and ASCII alike.
+TEST_CASE("faults: a fault on writes to D100 fires for 1401, 1402 and 1406 that touch D100, from the decoded Request",
+          "[scenario][faults][request]") {
+    for (auto codec : {protocol::Codec::Binary, protocol::Codec::Ascii}) {
+        const Wire wire{protocol::FrameKind::E3, codec};
+        auto d = [&](std::string_view address) { return device(Form::Q, address); };
+        auto batch_write = [&](std::string_view at, std::uint16_t points) {
+            return wire.request(word(0x1401) + word(0x0000) + d(at) + word(points) +
+                                words(std::vector<std::uint16_t>(points, 7)));
+        };
+        auto random_write = [&](std::string_view at) {
+            return wire.request(word(0x1402) + word(0x0000) + byte(1) + byte(0) + d(at) + word(7));
+        };
+        auto block_write = [&](std::string_view at, std::uint16_t points) {
+            return wire.request(block_write_req(0x0000, {{d(at), std::vector<std::uint16_t>(points, 7)}}, {}));
+        };
+        auto read = wire.request(word(0x0401) + word(0x0000) + d("D100") + word(1));
+        INFO(wire.name());
+        Rig rig(R"({"faults": [{"do": "end_code", "end_code": "C05C", "match": {"access": "write", "devices": "D100"}}]})");
+        auto fired = [&](const Bytes& frame) { return !rig.plan(frame).decision.fired.empty(); };
+        CHECK(fired(batch_write("D100", 1)));
+        CHECK(fired(batch_write("D98", 3)));      // D98-D100
+        CHECK(fired(random_write("D100")));
+        CHECK(fired(block_write("D100", 2)));
+        CHECK(fired(block_write("D95", 10)));     // D95-D104
+        CHECK_FALSE(fired(batch_write("D101", 1)));
+        CHECK_FALSE(fired(batch_write("D97", 3)));   // D97-D99
+        CHECK_FALSE(fired(random_write("D99")));
+        CHECK_FALSE(fired(block_write("D90", 10)));  // D90-D99
+        CHECK_FALSE(fired(read));                    // a read of D100 is not a write
+    }
 }

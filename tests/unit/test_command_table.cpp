@@ -1,0 +1,91 @@
+// The command table's flags against the specs' tables: the request path asks
+// these flags and nothing else, so a wrong flag is a wrong answer on the wire.
+// Sources: slmp-labels-remote-misc.md §5–§8 (remote, password, clear error),
+// Appendix 3 (commands that cannot reach CPU No.2–4), hardware-behaviour.md §4
+// (what each port family refuses).
+#include "protocol/command_table.hpp"
+
+#include <set>
+
+#include "support/fixtures.hpp"
+
+using namespace slmp;
+using namespace slmp::protocol;
+using devicemodel::Family;
+
+namespace {
+
+std::set<std::uint16_t> commands_where(bool (CommandSpec::*flag)() const) {
+    std::set<std::uint16_t> found;
+    for (const auto& row : all_commands())
+        if ((row.*flag)()) found.insert(row.command);
+    return found;
+}
+
+std::set<std::uint16_t> commands_refused_by(Family family) {
+    std::set<std::uint16_t> found;
+    for (const auto& row : all_commands())
+        if (!row.served_by(family)) found.insert(row.command);
+    return found;
+}
+
+}  // namespace
+
+TEST_CASE("command table: exactly 1630/1631 are served on a connection the remote password locks", "[table]") {
+    CHECK(commands_where(&CommandSpec::password_exempt) == std::set<std::uint16_t>{0x1630, 0x1631});
+}
+
+TEST_CASE("command table: exactly 1001 1002 1003 1005 1006 1617 are operator (state-changing) commands", "[table]") {
+    CHECK(commands_where(&CommandSpec::operator_command) ==
+          std::set<std::uint16_t>{0x1001, 0x1002, 0x1003, 0x1005, 0x1006, 0x1617});
+}
+
+TEST_CASE("command table: the commands that cannot reach CPU No.2-4 (Appendix 3)", "[table]") {
+    CHECK(commands_where(&CommandSpec::control_cpu_only) ==
+          std::set<std::uint16_t>{0x0613, 0x0619, 0x0801, 0x0802, 0x1613, 0x1617});
+}
+
+TEST_CASE("command table: device commands have a decoder; the write ones are flagged as writes", "[table]") {
+    CHECK(commands_where(&CommandSpec::device_command) ==
+          std::set<std::uint16_t>{0x0401, 0x0403, 0x0406, 0x0801, 0x1401, 0x1402, 0x1406});
+    std::set<std::uint16_t> device_writes;
+    for (const auto& row : all_commands())
+        if (row.device_command() && row.writes()) device_writes.insert(row.command);
+    CHECK(device_writes == std::set<std::uint16_t>{0x1401, 0x1402, 0x1406});
+    // Everything else that writes memory: buffer memory, and the remote
+    // operations that clear devices (RUN with a clear mode, Latch Clear, RESET).
+    CHECK(commands_where(&CommandSpec::writes) ==
+          std::set<std::uint16_t>{0x1001, 0x1005, 0x1006, 0x1401, 0x1402, 0x1406, 0x1601, 0x1613});
+}
+
+TEST_CASE("command table: the device form and the extended layout follow the subcommand", "[table]") {
+    for (const auto& row : all_commands()) {
+        INFO(std::hex << row.command << "/" << row.subcommand);
+        if (!row.device_command()) {
+            CHECK(row.subcommand == 0x0000);
+            continue;
+        }
+        const auto form = row.subcommand & 0x0003;
+        CHECK(row.extended() == ((row.subcommand & 0x0080) != 0));
+        CHECK(row.form == (form >= 2 ? DeviceForm::IQR : DeviceForm::Q));
+        CHECK(row.access == (form % 2 == 1 ? Access::Bits : Access::Words));
+    }
+}
+
+TEST_CASE("command table: which port families refuse which commands (hardware-behaviour.md §4)", "[table]") {
+    CHECK(commands_refused_by(Family::IQR).empty());
+    CHECK(commands_refused_by(Family::QJ71E71).empty());
+    const std::set<std::uint16_t> built_in_q_l{0x0101, 0x0406, 0x0613, 0x0619, 0x1406, 0x1613};
+    CHECK(commands_refused_by(Family::QnU) == built_in_q_l);
+    CHECK(commands_refused_by(Family::L) == built_in_q_l);
+    CHECK(commands_refused_by(Family::IQF) == std::set<std::uint16_t>{0x0613, 0x0801, 0x0802, 0x1613});
+}
+
+TEST_CASE("command table: find_command and find_any_row", "[table]") {
+    REQUIRE(find_command(0x0401, 0x0082));
+    CHECK(find_command(0x0401, 0x0082)->name == "Device Read (word units, iQ-R form, extended)");
+    CHECK_FALSE(find_command(0x0403, 0x0001));   // Read Random has no bit units
+    REQUIRE(find_any_row(0x0403));
+    CHECK(find_any_row(0x0403)->command == 0x0403);
+    CHECK_FALSE(find_any_row(0x041A));   // labels: not yet in the table
+}
