@@ -14,6 +14,7 @@
 #include "devicemodel/device_table.hpp"
 #include "devicemodel/runtime_config.hpp"
 #include "protocol/peer.hpp"
+#include "protocol/port_profile.hpp"
 
 namespace slmp::config {
 
@@ -24,11 +25,17 @@ struct ConfigError : std::runtime_error {
 // --- CPU profiles ----------------------------------------------------------
 // Names of the profiles built into the binary ("R08CPU", "Q26UDEHCPU", ...).
 std::vector<std::string> builtin_profile_names();
+// One profile file: the CPU's own facts and what its SLMP port answers. A
+// CPU model is still one file; the device model never sees the port's half.
+struct Profile {
+    devicemodel::CpuProfile cpu;
+    protocol::PortProfile port;
+};
 // A built-in profile by name (case-insensitive), or a profile JSON file by path
 // (anything containing '/' or ending in ".json").
-devicemodel::CpuProfile load_profile(const std::string& name_or_path);
+Profile load_profile(const std::string& name_or_path);
 // Parses profile JSON text; `source` names it in error messages.
-devicemodel::CpuProfile parse_profile(const std::string& json_text, const std::string& source);
+Profile parse_profile(const std::string& json_text, const std::string& source);
 
 // --- Server configuration ----------------------------------------------------
 enum class DataCode : std::uint8_t { Binary, Ascii, Auto };
@@ -124,14 +131,14 @@ ServerConfig load_server_config(const std::filesystem::path& file);
 ServerConfig parse_server_config(const std::string& json_text, const std::string& source);
 
 // The profile named by the configuration, with its device-size overrides applied.
-devicemodel::CpuProfile resolve_profile(const ServerConfig& config);
+Profile resolve_profile(const ServerConfig& config);
 // Writes the configured initial device values into a CPU (checked against its sizes).
 void apply_initial_values(devicemodel::Cpu& cpu, const ServerConfig& config);
 void apply_initial_values(devicemodel::Cpu& cpu, const std::vector<InitialValue>& values);
 // Adds the configured modules and networks to CPU No.1.
 void attach_hardware(devicemodel::Cpu& cpu, const ServerConfig& config);
 // The profile of CPU No.2–4, with its size overrides.
-devicemodel::CpuProfile resolve_profile(const CpuConfig& cpu);
+Profile resolve_profile(const CpuConfig& cpu);
 // The "cpu" parameters checked against the CPU's profile (device sizes, the
 // family's password length rule); throws ConfigError naming the key and the fix.
 devicemodel::RuntimeConfig checked_runtime_config(const CpuRuntimeConfig& cpu, const devicemodel::CpuProfile& profile);

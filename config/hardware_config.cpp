@@ -98,9 +98,9 @@ void attach_hardware(devicemodel::Cpu& cpu, const ServerConfig& config) {
     for (const auto& n : config.networks) cpu.add_network(n.number, n.sizes);
 }
 
-devicemodel::CpuProfile resolve_profile(const CpuConfig& cpu) {
+Profile resolve_profile(const CpuConfig& cpu) {
     auto profile = load_profile(cpu.profile);
-    for (const auto& [area, points] : cpu.device_sizes) profile.sizes[static_cast<std::size_t>(area)] = points;
+    for (const auto& [area, points] : cpu.device_sizes) profile.cpu.sizes[static_cast<std::size_t>(area)] = points;
     return profile;
 }
 

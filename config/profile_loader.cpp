@@ -14,7 +14,7 @@ namespace slmp::config {
 using devicemodel::Area;
 using devicemodel::CpuProfile;
 using devicemodel::Family;
-using devicemodel::Refusal;
+using protocol::Refusal;
 
 namespace {
 
@@ -50,12 +50,12 @@ Family family(const JsonAt& at) {
     at.fail("unknown family '" + text + "'", "use iQ-R, QnU, L, QJ71E71 or iQ-F");
 }
 
-devicemodel::PointLimit limit(const JsonAt& at) {
+protocol::PointLimit limit(const JsonAt& at) {
     at.only_keys({"max", "end_code"});
     return {static_cast<std::uint32_t>(at["max"].unsigned_int(65535)), at["end_code"].hex_code()};
 }
 
-devicemodel::FormLimit form_limit(const JsonAt& at) {
+protocol::FormLimit form_limit(const JsonAt& at) {
     at.only_keys({"q", "iqr", "end_code"});
     return {static_cast<std::uint32_t>(at["q"].unsigned_int(65535)), static_cast<std::uint32_t>(at["iqr"].unsigned_int(65535)),
             at["end_code"].hex_code()};
@@ -70,54 +70,56 @@ std::vector<Area> areas(const JsonAt& at) {
 
 }  // namespace
 
-CpuProfile parse_profile(const std::string& json_text, const std::string& source) {
+Profile parse_profile(const std::string& json_text, const std::string& source) {
     auto json = parse_json(json_text, source);
     JsonAt root(json, source);
     root.only_keys({"name", "description", "type_name", "model_code", "family", "frame_4e", "iqr_subcommands",
                     "unsupported_commands", "end_codes", "limits", "device_sizes", "start_only_range_check",
                     "read_only_devices", "size_registers", "zr_ascii_hex", "mixed_block_write",
                     "station_buffer_words", "remote_password_length"});
-    CpuProfile p;
+    Profile profile;
+    auto& p = profile.cpu;
+    auto& port = profile.port;
     p.name = root["name"].string();
     p.type_name = root["type_name"].string();
     if (p.type_name.size() > 16) root["type_name"].fail("longer than 16 characters", "shorten it (0101 sends 16)");
     p.model_code = root["model_code"].hex_code();
     p.family = family(root["family"]);
-    p.frame_4e = refusal(root["frame_4e"]);
-    p.iqr_subcommands = refusal(root["iqr_subcommands"]);
+    port.frame_4e = refusal(root["frame_4e"]);
+    port.iqr_subcommands = refusal(root["iqr_subcommands"]);
     // Which commands a port family serves is the command table's (families);
     // a profile may refuse more.
     if (root.has("unsupported_commands")) {
         auto unsupported = root["unsupported_commands"];
         unsupported.expect_array();
         for (std::size_t i = 0; i < unsupported.json().size(); ++i)
-            p.unsupported_commands.push_back(unsupported[i].hex_code());
+            port.unsupported_commands.push_back(unsupported[i].hex_code());
     }
 
     auto codes = root["end_codes"];
     codes.only_keys({"not_supported", "out_of_range", "not_accessible", "unknown_device", "bad_unit"});
-    p.not_supported_code = codes["not_supported"].hex_code();
-    p.out_of_range_code = codes["out_of_range"].hex_code();
-    p.not_accessible_code = codes["not_accessible"].hex_code();
-    p.unknown_device_code = codes["unknown_device"].hex_code();
-    p.bad_unit_code = codes["bad_unit"].hex_code();
+    port.not_supported_code = codes["not_supported"].hex_code();
+    port.out_of_range_code = codes["out_of_range"].hex_code();
+    port.not_accessible_code = codes["not_accessible"].hex_code();
+    port.unknown_device_code = codes["unknown_device"].hex_code();
+    port.bad_unit_code = codes["bad_unit"].hex_code();
 
     auto limits = root["limits"];
     limits.only_keys({"batch_words", "batch_bits_binary", "batch_bits_ascii", "loopback_bytes", "random_read_points",
                       "random_write_weight", "random_write_bits", "monitor_points", "block_count", "block_points",
                       "extended_over_limit_code"});
-    p.batch_words = limit(limits["batch_words"]);
-    p.batch_bits_binary = limit(limits["batch_bits_binary"]);
-    p.batch_bits_ascii = limit(limits["batch_bits_ascii"]);
-    p.loopback_max_bytes = static_cast<std::uint32_t>(limits["loopback_bytes"].unsigned_int(65535));
-    p.random_read_points = form_limit(limits["random_read_points"]);
-    p.random_write_weight = form_limit(limits["random_write_weight"]);
-    p.random_write_bits = form_limit(limits["random_write_bits"]);
-    p.monitor_points = form_limit(limits["monitor_points"]);
-    p.block_count = form_limit(limits["block_count"]);
-    p.block_points = limit(limits["block_points"]);
-    if (limits.has("extended_over_limit_code")) p.extended_over_limit_code = limits["extended_over_limit_code"].hex_code();
-    p.mixed_block_write = refusal(root["mixed_block_write"]);
+    port.batch_words = limit(limits["batch_words"]);
+    port.batch_bits_binary = limit(limits["batch_bits_binary"]);
+    port.batch_bits_ascii = limit(limits["batch_bits_ascii"]);
+    port.loopback_max_bytes = static_cast<std::uint32_t>(limits["loopback_bytes"].unsigned_int(65535));
+    port.random_read_points = form_limit(limits["random_read_points"]);
+    port.random_write_weight = form_limit(limits["random_write_weight"]);
+    port.random_write_bits = form_limit(limits["random_write_bits"]);
+    port.monitor_points = form_limit(limits["monitor_points"]);
+    port.block_count = form_limit(limits["block_count"]);
+    port.block_points = limit(limits["block_points"]);
+    if (limits.has("extended_over_limit_code")) port.extended_over_limit_code = limits["extended_over_limit_code"].hex_code();
+    port.mixed_block_write = refusal(root["mixed_block_write"]);
     if (root.has("station_buffer_words"))
         p.station_buffer_words = static_cast<std::uint32_t>(root["station_buffer_words"].unsigned_int(0x7FFFFFFF));
 
@@ -130,7 +132,7 @@ CpuProfile parse_profile(const std::string& json_text, const std::string& source
         p.sizes[static_cast<std::size_t>(*a)] = static_cast<std::uint32_t>(at.unsigned_int(0x7FFFFFFF));
     }
     p.start_only_range_check = areas(root["start_only_range_check"]);
-    p.read_only = areas(root["read_only_devices"]);
+    port.read_only = areas(root["read_only_devices"]);
     auto regs = root["size_registers"];
     regs.expect_array();
     for (std::size_t i = 0; i < regs.json().size(); ++i) {
@@ -143,7 +145,7 @@ CpuProfile parse_profile(const std::string& json_text, const std::string& source
             reg["sd"].fail("SD" + std::to_string(sd) + " is outside the SD size", "raise device_sizes.SD or fix the number");
         p.size_registers.push_back({area(reg["device"]), sd, static_cast<std::uint8_t>(bits)});
     }
-    p.zr_ascii_hex = root["zr_ascii_hex"].boolean();
+    port.zr_ascii_hex = root["zr_ascii_hex"].boolean();
     if (root.has("remote_password_length")) {
         // [min, max] characters, e.g. [4, 4] for Q/L, [6, 32] for iQ-R.
         auto rule = root["remote_password_length"];
@@ -154,7 +156,7 @@ CpuProfile parse_profile(const std::string& json_text, const std::string& source
         if (p.password_min_length == 0 || p.password_min_length > p.password_max_length)
             rule.fail("min must be 1..max", "write e.g. [6, 32] (iQ-R) or [4, 4] (Q/L)");
     }
-    return p;
+    return profile;
 }
 
 std::vector<std::string> builtin_profile_names() {
@@ -163,7 +165,7 @@ std::vector<std::string> builtin_profile_names() {
     return names;
 }
 
-CpuProfile load_profile(const std::string& name_or_path) {
+Profile load_profile(const std::string& name_or_path) {
     bool is_path = name_or_path.find('/') != std::string::npos ||
                    (name_or_path.size() > 5 && name_or_path.ends_with(".json"));
     if (is_path) {

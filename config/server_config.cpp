@@ -146,9 +146,9 @@ ServerConfig load_server_config(const std::filesystem::path& file) {
     return parse_server_config(text.str(), file.string());
 }
 
-devicemodel::CpuProfile resolve_profile(const ServerConfig& config) {
+Profile resolve_profile(const ServerConfig& config) {
     auto profile = load_profile(config.profile);
-    for (const auto& [area, points] : config.device_sizes) profile.sizes[static_cast<std::size_t>(area)] = points;
+    for (const auto& [area, points] : config.device_sizes) profile.cpu.sizes[static_cast<std::size_t>(area)] = points;
     return profile;
 }
 

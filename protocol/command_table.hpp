@@ -14,6 +14,7 @@
 #include "protocol/end_code.hpp"
 #include "protocol/engine.hpp"
 #include "protocol/fields.hpp"
+#include "protocol/port_profile.hpp"
 #include "protocol/request.hpp"
 
 namespace slmp::protocol {
@@ -28,7 +29,9 @@ struct CommandSpec;
 // the end code (Ok, or the error; `out` is dropped then).
 struct CommandContext {
     devicemodel::Cpu& cpu;         // the CPU the request's module I/O number selects
+    const PortProfile& port;       // its port's end codes and limits
     const CpuSet& cpus;            // every CPU of the station (U3E1\G reaches CPU No.2)
+    const PortProfile& station_port;   // the port of CPU No.1, which the client is connected to
     const FrameHeader& header;
     const CommandSpec& spec;
     const Operands& operands;      // what the row's decoder read (empty without one)
@@ -39,11 +42,11 @@ struct CommandContext {
 };
 
 // What a decoder gets: the request data after the subcommand, the row, and
-// the profile whose limits a port enforces while it reads the fields.
+// the port whose limits are enforced while the fields are read.
 struct DecodeContext {
     FieldReader& in;
     const CommandSpec& spec;
-    const devicemodel::CpuProfile& profile;
+    const PortProfile& port;
     Operands& out;
 };
 

@@ -50,7 +50,7 @@ Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy polic
     // After the header: monitoring timer, command, subcommand (2 bytes each).
     const auto& header = request.header;
     auto body = input.subspan(header.header_size, header.data_length);
-    FieldReader in(header.codec, body, CodecOptions{cpu_.profile().zr_ascii_hex});
+    FieldReader in(header.codec, body, CodecOptions{ports_[0].zr_ascii_hex});
     in.u16("monitoring timer");
     request.command = in.u16("command");
     request.subcommand = in.u16("subcommand");
@@ -66,8 +66,8 @@ Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy polic
     if (request.spec && request.spec->decode) {
         // The target CPU's limits apply; a request with a bad route is refused
         // before its operands matter, but the scenario hook still sees them.
-        const auto* cpu = request.route_error == EndCode::Ok ? cpus_[request.target] : cpus_[0];
-        DecodeContext context{in, *request.spec, cpu->profile(), request.operands};
+        const auto& port = ports_[request.route_error == EndCode::Ok ? request.target : 0];
+        DecodeContext context{in, *request.spec, port, request.operands};
         request.spec->decode(context);
     }
     return request;

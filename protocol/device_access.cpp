@@ -54,7 +54,7 @@ bool index_value(const devicemodel::Cpu& cpu, const Modifier& m, std::int64_t& v
 }  // namespace
 
 EndCode resolve(CommandContext& ctx, const DeviceField& field, Use use, Target& target) {
-    const auto& profile = ctx.cpu.profile();
+    const auto& profile = ctx.port;
     if (!field.spec) return end_code(profile.unknown_device_code);
     const auto& spec = *field.spec;
     const auto& ext = field.extension;

@@ -14,6 +14,7 @@
 #include "protocol/end_code.hpp"
 #include "protocol/fields.hpp"
 #include "protocol/frame.hpp"
+#include "protocol/port_profile.hpp"
 #include "protocol/request.hpp"
 
 namespace slmp::protocol {
@@ -64,10 +65,17 @@ struct Outcome {
 
 class Engine {
 public:
-    Engine(devicemodel::Cpu& cpu, EngineOptions options = {}) : cpu_(cpu), options_(options) { cpus_[0] = &cpu; }
+    // `port`: what the CPU's SLMP port answers (from the same profile file as the CPU).
+    Engine(devicemodel::Cpu& cpu, PortProfile port, EngineOptions options = {}) : cpu_(cpu), options_(options) {
+        cpus_[0] = &cpu;
+        ports_[0] = std::move(port);
+    }
 
     // Adds CPU No.2–4 of a multi-CPU system, reached with module I/O 03E1–03E3.
-    void add_cpu(int number, devicemodel::Cpu& cpu) { cpus_.at(static_cast<std::size_t>(number - 1)) = &cpu; }
+    void add_cpu(int number, devicemodel::Cpu& cpu, PortProfile port) {
+        cpus_.at(static_cast<std::size_t>(number - 1)) = &cpu;
+        ports_.at(static_cast<std::size_t>(number - 1)) = std::move(port);
+    }
     const CpuSet& cpus() const { return cpus_; }
 
     // Decodes the frame at the start of `input` (at most one); touches no memory.
@@ -80,11 +88,13 @@ public:
     }
 
     devicemodel::Cpu& cpu() { return cpu_; }
+    const PortProfile& port() const { return ports_[0]; }
     const EngineOptions& options() const { return options_; }
 
 private:
     devicemodel::Cpu& cpu_;
     CpuSet cpus_{};
+    std::array<PortProfile, 4> ports_{};   // the port of each CPU in cpus_
     EngineOptions options_;
 };
 

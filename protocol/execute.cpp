@@ -14,8 +14,6 @@
 namespace slmp::protocol {
 namespace {
 
-using devicemodel::CpuProfile;
-using devicemodel::Refusal;
 
 // Garbage, oversized frames and partial frames: no command was read.
 Outcome unframed(const Request& request, std::size_t max_frame_bytes) {
@@ -67,18 +65,19 @@ bool locked_out(const devicemodel::Cpu& cpu, const Session& session, std::uint16
 // The port's own refusals, before the table is asked for the subcommand: a
 // command the port family does not serve (or the profile adds), a device
 // command in the iQ-R form on a port that has only the Q form.
-std::optional<Outcome> port_refusal(const CpuProfile& profile, const Request& request, Reply& reply) {
+std::optional<Outcome> port_refusal(const devicemodel::CpuProfile& cpu, const PortProfile& profile,
+                                    const Request& request, Reply& reply) {
     const auto* row = find_any_row(request.command);
     const auto& extra = profile.unsupported_commands;
-    if ((row && !row->served_by(profile.family)) ||
+    if ((row && !row->served_by(cpu.family)) ||
         std::find(extra.begin(), extra.end(), request.command) != extra.end())
         return reply.error(end_code(profile.not_supported_code),
-                           "command " + hex4(request.command) + " is not supported by " + profile.name);
+                           "command " + hex4(request.command) + " is not supported by " + cpu.name);
     const auto form = request.subcommand & 0xFF7F;   // 008x: the same forms with the extension specification
     if (row && row->device_command() && (form == 0x0002 || form == 0x0003) &&
         profile.iqr_subcommands.kind != Refusal::Kind::Serve)
         return reply.refuse(profile.iqr_subcommands, hex4(request.command) + "/" + hex4(request.subcommand) +
-                                                         " uses the iQ-R device form, which " + profile.name +
+                                                         " uses the iQ-R device form, which " + cpu.name +
                                                          " does not accept");
     return std::nullopt;
 }
@@ -87,16 +86,17 @@ std::optional<Outcome> port_refusal(const CpuProfile& profile, const Request& re
 
 Outcome Engine::execute(const Request& request, Session& session) {
     if (!request.complete()) return unframed(request, options_.max_frame_bytes);
-    const auto& profile = cpu_.profile();
+    const auto& cpu = cpu_.profile();
+    const auto& profile = ports_[0];
     Reply reply(request);
     if (request.header.kind == FrameKind::E4 && profile.frame_4e.kind != Refusal::Kind::Serve)
-        return reply.refuse(profile.frame_4e, "4E frame on a port of " + profile.name + ", which serves 3E only");
+        return reply.refuse(profile.frame_4e, "4E frame on a port of " + cpu.name + ", which serves 3E only");
     if (!request.has_command) return bad_header(request, reply);
     if (request.route_error != EndCode::Ok) return reply.error(request.route_error, route_note(request.header.route));
     if (locked_out(cpu_, session, request.command))
         return reply.error(EndCode::RemotePasswordLocked,
                            "this connection is locked by the remote password; send Unlock 1630 with the password first");
-    if (auto refused = port_refusal(profile, request, reply)) return std::move(*refused);
+    if (auto refused = port_refusal(cpu, profile, request, reply)) return std::move(*refused);
 
     const auto* spec = request.spec;
     if (!spec)
@@ -110,8 +110,9 @@ Outcome Engine::execute(const Request& request, Session& session) {
                            std::string(spec->name) + " cannot reach CPU No.2-4 of a multi-CPU system (Appendix 3)");
 
     FieldReader in(request.header.codec, request.data, CodecOptions{profile.zr_ascii_hex});
-    FieldWriter out(request.header.codec, CodecOptions{target.profile().zr_ascii_hex});
-    CommandContext ctx{target, cpus_, request.header, *spec, request.operands, session, in, out};
+    FieldWriter out(request.header.codec, CodecOptions{ports_[request.target].zr_ascii_hex});
+    CommandContext ctx{target, ports_[request.target], cpus_, profile, request.header, *spec, request.operands,
+                       session, in, out};
     auto code = spec->handler(ctx);
     if (code != EndCode::Ok) {
         auto field = code == request.operands.error ? request.operands.error_field : in.error_field();

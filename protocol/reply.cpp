@@ -6,8 +6,6 @@
 
 namespace slmp::protocol {
 
-using devicemodel::Refusal;
-
 Reply::Reply(const Request& request) : header_(request.header) {
     outcome_.consumed = request.size;
     outcome_.command = request.command;

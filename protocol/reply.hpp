@@ -6,7 +6,6 @@
 #include <span>
 #include <string>
 
-#include "devicemodel/cpu_profile.hpp"
 #include "protocol/engine.hpp"
 
 namespace slmp::protocol {
@@ -21,7 +20,7 @@ public:
     // the request's command and subcommand (spec §3.2.4; hardware-behaviour §1).
     Outcome error(EndCode code, std::string note);
     // What the profile says for a request its port does not serve.
-    Outcome refuse(const devicemodel::Refusal& refusal, std::string note);
+    Outcome refuse(const Refusal& refusal, std::string note);
     // No response: Silent, Close or Restart.
     Outcome drop(Outcome::Action action, std::string note);
 

@@ -17,8 +17,8 @@
 namespace slmp::server {
 
 struct Core {
-    Core(devicemodel::CpuProfile profile, protocol::EngineOptions options)
-        : cpu(std::move(profile)), engine(cpu, options) {}
+    Core(config::Profile profile, protocol::EngineOptions options)
+        : cpu(std::move(profile.cpu)), engine(cpu, std::move(profile.port), options) {}
 
     devicemodel::Cpu cpu;
     protocol::Engine engine;

@@ -34,9 +34,10 @@ Server::Server(const config::ServerConfig& config)
     config::apply_initial_values(core_.cpu, config_);
     config::attach_hardware(core_.cpu, config_);
     for (const auto& cpu : config_.cpus) {
-        core_.other_cpus.push_back(std::make_unique<devicemodel::Cpu>(config::resolve_profile(cpu)));
+        auto profile = config::resolve_profile(cpu);
+        core_.other_cpus.push_back(std::make_unique<devicemodel::Cpu>(std::move(profile.cpu)));
         config::apply_initial_values(*core_.other_cpus.back(), cpu.devices);
-        core_.engine.add_cpu(cpu.number, *core_.other_cpus.back());
+        core_.engine.add_cpu(cpu.number, *core_.other_cpus.back(), std::move(profile.port));
     }
     start_cpu_runtime();
     auto address = bind_address(config_.bind);

@@ -41,10 +41,10 @@ EndCode locate(CommandContext& ctx, std::uint32_t address, std::uint16_t bytes, 
     }
     if (!window.memory) return EndCode::ModuleNotPresent;
     if (bytes < 2 || bytes > kMaxExtendUnitBytes) return EndCode::WordPointsOverLimit;
-    if (address < head) return end_code(ctx.cpu.profile().out_of_range_code);
+    if (address < head) return end_code(ctx.port.out_of_range_code);
     window.first_byte = address - head;
     if (std::uint64_t{window.first_byte} + bytes > std::uint64_t{window.memory->size(Area::G)} * 2)
-        return end_code(ctx.cpu.profile().out_of_range_code);
+        return end_code(ctx.port.out_of_range_code);
     return EndCode::Ok;
 }
 
@@ -63,7 +63,7 @@ void set_byte(const ByteWindow& w, std::uint32_t i, std::uint8_t value) {
 
 EndCode check_words(CommandContext& ctx, std::uint32_t address, std::uint16_t words) {
     if (words == 0 || words > kMaxMemoryWords) return EndCode::WordPointsOverLimit;
-    if (!ctx.cpu.station_buffer().contains(Area::G, address, words)) return end_code(ctx.cpu.profile().out_of_range_code);
+    if (!ctx.cpu.station_buffer().contains(Area::G, address, words)) return end_code(ctx.port.out_of_range_code);
     return EndCode::Ok;
 }
 

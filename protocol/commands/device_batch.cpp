@@ -26,7 +26,7 @@ using devicemodel::Unit;
 
 // Steps 2–5 of the check order above.
 EndCode check(CommandContext& ctx, const DeviceOperand& device, bool write, Target& target) {
-    const auto& profile = ctx.cpu.profile();
+    const auto& profile = ctx.port;
     if (auto code = resolve(ctx, device.field, write ? Use::BatchWrite : Use::BatchRead, target); code != EndCode::Ok)
         return code;
     const auto& spec = *target.spec;

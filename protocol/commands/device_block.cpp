@@ -21,13 +21,13 @@ using devicemodel::Unit;
 
 // Reads the block counts and the blocks; `with_data` for 1406.
 void decode_blocks(DecodeContext& d, bool with_data) {
-    const auto& profile = d.profile;
+    const auto& profile = d.port;
     auto word_blocks = d.in.u8("word device blocks");
     auto bit_blocks = d.in.u8("bit device blocks");
     if (!d.in.ok()) return fail_field(d);
     if (over(d, profile.block_count, std::uint64_t{word_blocks} + bit_blocks)) fail(d, over_limit_code(d, profile.block_count));
     if (with_data && word_blocks > 0 && bit_blocks > 0 &&
-        profile.mixed_block_write.kind == devicemodel::Refusal::Kind::EndCode)
+        profile.mixed_block_write.kind == Refusal::Kind::EndCode)
         fail(d, end_code(profile.mixed_block_write.end_code));
     for (unsigned i = 0; i < word_blocks + bit_blocks && d.in.ok(); ++i) {
         DeviceOperand block;
@@ -42,7 +42,7 @@ void decode_blocks(DecodeContext& d, bool with_data) {
 
 // Totals, then every block's device.
 EndCode check_blocks(CommandContext& ctx, bool write, std::vector<Target>& targets) {
-    const auto& profile = ctx.cpu.profile();
+    const auto& profile = ctx.port;
     const auto& blocks = ctx.operands.devices;
     std::uint64_t total = 0;
     for (const auto& block : blocks) total += block.points;

@@ -29,7 +29,7 @@ EndCode resolve_all(CommandContext& ctx, const std::vector<DeviceField>& fields,
     for (const auto& field : fields) {
         Target target;
         if (auto code = resolve(ctx, field, use, target); code != EndCode::Ok) return code;
-        if (!fits(target, devices_in_words(*target.spec, words))) return end_code(ctx.cpu.profile().out_of_range_code);
+        if (!fits(target, devices_in_words(*target.spec, words))) return end_code(ctx.port.out_of_range_code);
         targets.push_back(target);
     }
     return EndCode::Ok;
@@ -63,7 +63,7 @@ std::vector<DeviceField> fields_of(const Operands& ops, OperandUnit unit) {
 }
 
 // The request of 0403 and 0801: counts, then the word and double-word devices.
-void decode_device_list(DecodeContext& d, const devicemodel::FormLimit& limit) {
+void decode_device_list(DecodeContext& d, const FormLimit& limit) {
     auto word_points = d.in.u8("word access points");
     auto dword_points = d.in.u8("double-word access points");
     if (!d.in.ok()) return fail_field(d);
@@ -78,8 +78,8 @@ void decode_device_list(DecodeContext& d, const devicemodel::FormLimit& limit) {
 
 }  // namespace
 
-void decode_random_read(DecodeContext& d) { decode_device_list(d, d.profile.random_read_points); }
-void decode_monitor(DecodeContext& d) { decode_device_list(d, d.profile.monitor_points); }
+void decode_random_read(DecodeContext& d) { decode_device_list(d, d.port.random_read_points); }
+void decode_monitor(DecodeContext& d) { decode_device_list(d, d.port.monitor_points); }
 
 void decode_random_write_words(DecodeContext& d) {
     auto word_points = d.in.u8("word access points");
@@ -87,7 +87,7 @@ void decode_random_write_words(DecodeContext& d) {
     if (!d.in.ok()) return fail_field(d);
     // 12 per word point + 14 per double-word point (§6.4).
     auto weight_sum = std::uint64_t{word_points} * 12 + std::uint64_t{dword_points} * 14;
-    if (over(d, d.profile.random_write_weight, weight_sum)) fail(d, over_limit_code(d, d.profile.random_write_weight));
+    if (over(d, d.port.random_write_weight, weight_sum)) fail(d, over_limit_code(d, d.port.random_write_weight));
     for (unsigned i = 0; i < word_points + dword_points && d.in.ok(); ++i) {
         const bool word = i < word_points;
         DeviceOperand device{read_device(d, word ? "word access device" : "double-word access device"),
@@ -103,7 +103,7 @@ void decode_random_write_words(DecodeContext& d) {
 void decode_random_write_bits(DecodeContext& d) {
     auto points = d.in.u8("bit access points");
     if (!d.in.ok()) return fail_field(d);
-    if (over(d, d.profile.random_write_bits, points)) fail(d, over_limit_code(d, d.profile.random_write_bits));
+    if (over(d, d.port.random_write_bits, points)) fail(d, over_limit_code(d, d.port.random_write_bits));
     for (unsigned i = 0; i < points && d.in.ok(); ++i) {
         DeviceOperand device{read_device(d, "bit access device"), OperandUnit::Bit, 1};
         // Set/reset: 1 byte / 2 characters in the Q form, 2 bytes / 4 in the
@@ -138,7 +138,7 @@ EndCode random_write_words(CommandContext& ctx) {
 }
 
 EndCode random_write_bits(CommandContext& ctx) {
-    const auto& profile = ctx.cpu.profile();
+    const auto& profile = ctx.port;
     const auto& ops = ctx.operands;
     if (ops.error != EndCode::Ok) return ops.error;
     std::vector<Target> targets;

@@ -10,7 +10,7 @@
 namespace slmp::protocol::commands {
 
 // The limit for the request's subcommand family.
-inline std::uint64_t form_max(const CommandSpec& spec, const devicemodel::FormLimit& limit) {
+inline std::uint64_t form_max(const CommandSpec& spec, const FormLimit& limit) {
     return spec.form == DeviceForm::Q ? limit.q : limit.iqr;
 }
 
@@ -19,13 +19,13 @@ inline std::uint64_t form_max(const CommandSpec& spec, const devicemodel::FormLi
 inline std::uint64_t weight(const CommandSpec& spec) { return spec.extended() && spec.form == DeviceForm::Q ? 2 : 1; }
 
 // Whether a weighted count is outside 1..limit.
-inline bool over(const DecodeContext& d, const devicemodel::FormLimit& limit, std::uint64_t count) {
+inline bool over(const DecodeContext& d, const FormLimit& limit, std::uint64_t count) {
     return count == 0 || count * weight(d.spec) > form_max(d.spec, limit);
 }
 
 // The end code for an exceeded limit (QJ71E71-100 answers extended requests with 4080).
-inline EndCode over_limit_code(const DecodeContext& d, const devicemodel::FormLimit& limit) {
-    if (d.spec.extended() && d.profile.extended_over_limit_code != 0) return end_code(d.profile.extended_over_limit_code);
+inline EndCode over_limit_code(const DecodeContext& d, const FormLimit& limit) {
+    if (d.spec.extended() && d.port.extended_over_limit_code != 0) return end_code(d.port.extended_over_limit_code);
     return end_code(limit.end_code);
 }
 

@@ -10,7 +10,7 @@ namespace slmp::protocol::commands {
 EndCode self_test(CommandContext& ctx) {
     auto count = ctx.in.u16("loopback data count");
     if (!ctx.in.ok()) return ctx.in.error();
-    if (count == 0 || count > ctx.cpu.profile().loopback_max_bytes) return EndCode::BadRequestContent;
+    if (count == 0 || count > ctx.port.loopback_max_bytes) return EndCode::BadRequestContent;
     auto data = ctx.in.raw(count, "loopback data");
     if (!ctx.in.finish()) return ctx.in.error();
     ctx.out.u16(count);

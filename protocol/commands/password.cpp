@@ -34,8 +34,7 @@ EndCode read_request(CommandContext& ctx, PasswordRequest& request) {
     request.text = ctx.in.raw(length, "password");
     if (!ctx.in.finish()) return ctx.in.error();
     request.station = ctx.cpus[0] ? ctx.cpus[0] : &ctx.cpu;
-    if (request.station->profile().password_max_length == 0)
-        return end_code(request.station->profile().not_supported_code);
+    if (request.station->profile().password_max_length == 0) return end_code(ctx.station_port.not_supported_code);
     return EndCode::Ok;
 }
 

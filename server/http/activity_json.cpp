@@ -33,7 +33,7 @@ json connection_json(const Connection& connection) {
                 {"requests", connection.requests}};
 }
 
-json request_json(const RequestRecord& record, const devicemodel::CpuProfile& profile) {
+json request_json(const RequestRecord& record, const protocol::PortProfile& port) {
     const auto& outcome = record.outcome;
     // A frame rejected before its command was read (garbage, a refused 4E
     // header, an oversized length) has command and subcommand 0.
@@ -52,7 +52,7 @@ json request_json(const RequestRecord& record, const devicemodel::CpuProfile& pr
              {"bytes_in", record.frame.size()},
              {"bytes_out", outcome.response.size()},
              {"note", outcome.note}};
-    if (auto devices = decoded ? request_devices(record.frame, profile) : std::nullopt) {
+    if (auto devices = decoded ? request_devices(record.frame, port) : std::nullopt) {
         out["device"] = devices->device;
         out["points"] = devices->points;
         out["unit"] = devices->unit;

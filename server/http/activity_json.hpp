@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "devicemodel/cpu_profile.hpp"
+#include "protocol/port_profile.hpp"
 #include "server/activity.hpp"
 
 namespace slmp::server::http {
@@ -15,6 +15,6 @@ nlohmann::json connection_json(const Connection& connection);
 // {"time", "connection", "transport", "peer", "command", "subcommand", "name",
 //  "device", "points", "unit", "end_code", "reaction", "latency_us",
 //  "bytes_in", "bytes_out", "note"} — docs/api.md, "request" events.
-nlohmann::json request_json(const RequestRecord& record, const devicemodel::CpuProfile& profile);
+nlohmann::json request_json(const RequestRecord& record, const protocol::PortProfile& port);
 
 }  // namespace slmp::server::http

@@ -132,7 +132,7 @@ void EventHub::flush_writes(std::string_view source, std::string_view peer, std:
 }
 
 void EventHub::on_request(const RequestRecord& record) {
-    if (wanted(kRequestEvents)) publish(kRequestEvents, "request", request_json(record, core_.cpu.profile()));
+    if (wanted(kRequestEvents)) publish(kRequestEvents, "request", request_json(record, core_.engine.port()));
     flush_writes("slmp", record.peer, record.connection);
 }
 

@@ -7,12 +7,12 @@
 namespace slmp::server::http {
 
 std::optional<RequestDevices> request_devices(std::span<const std::uint8_t> frame,
-                                              const devicemodel::CpuProfile& profile) {
+                                              const protocol::PortProfile& port) {
     using namespace protocol;
     auto scan = scan_frame(frame, Direction::Request, DataCodePolicy::Auto, frame.size());
     if (scan.status != FrameScan::Status::Complete) return std::nullopt;
     FieldReader in(scan.header.codec, frame.subspan(scan.header.header_size, scan.header.data_length),
-                   CodecOptions{profile.zr_ascii_hex});
+                   CodecOptions{port.zr_ascii_hex});
     in.u16("monitoring timer");
     auto command = in.u16("command");
     auto subcommand = in.u16("subcommand");

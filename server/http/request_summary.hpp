@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "devicemodel/cpu_profile.hpp"
+#include "protocol/port_profile.hpp"
 
 namespace slmp::server::http {
 
@@ -23,7 +23,7 @@ struct RequestDevices {
 // The head device and points of a device batch request (0401/1401, any form);
 // nullopt for other commands and for frames that do not decode.
 std::optional<RequestDevices> request_devices(std::span<const std::uint8_t> frame,
-                                              const devicemodel::CpuProfile& profile);
+                                              const protocol::PortProfile& port);
 
 // The command table's name for (command, subcommand), or "" when not served.
 std::string_view command_name(std::uint16_t command, std::uint16_t subcommand);

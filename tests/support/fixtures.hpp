@@ -13,6 +13,7 @@
 #include <ostream>
 #include <span>
 #include <stdexcept>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -91,13 +92,27 @@ inline std::string le(std::uint32_t value, unsigned n) {
 // CPUs and the engine
 
 inline devicemodel::Cpu make_cpu(const std::string& profile = "R08CPU") {
-    return devicemodel::Cpu(config::load_profile(profile));
+    return devicemodel::Cpu(config::load_profile(profile).cpu);
+}
+
+// The SLMP port of a CPU built from a built-in profile (loaded once per
+// profile: a profile file holds both halves, the Cpu keeps only its own).
+inline const protocol::PortProfile& port_of(const devicemodel::Cpu& cpu) {
+    static std::map<std::string, protocol::PortProfile> ports;
+    auto it = ports.find(cpu.profile().name);
+    if (it == ports.end()) it = ports.emplace(cpu.profile().name, config::load_profile(cpu.profile().name).port).first;
+    return it->second;
+}
+
+// An engine in front of `cpu`, with its profile's port.
+inline protocol::Engine engine_for(devicemodel::Cpu& cpu, protocol::EngineOptions options = {}) {
+    return protocol::Engine(cpu, port_of(cpu), options);
 }
 
 inline Outcome run(devicemodel::Cpu& cpu, std::span<const std::uint8_t> request,
                    DataCodePolicy policy = DataCodePolicy::Auto, protocol::EngineOptions options = {}) {
     protocol::Session session;
-    return protocol::Engine(cpu, options).process(request, policy, session);
+    return engine_for(cpu, options).process(request, policy, session);
 }
 
 inline std::string to_string(Outcome::Action action) {

@@ -38,7 +38,7 @@ inline void set(devicemodel::Cpu& cpu, const std::string& address, std::uint32_t
 // before the runner's, as in the server's scan loop.
 struct ScenarioRig {
     explicit ScenarioRig(const std::string& json, const std::string& profile = "R08CPU")
-        : cpu(config::load_profile(profile)) {
+        : cpu(config::load_profile(profile).cpu) {
         std::vector<scenarios::Scenario> list;
         list.push_back(scenario(json));
         runner = std::make_unique<scenarios::ScenarioRunner>(

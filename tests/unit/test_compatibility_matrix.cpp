@@ -117,7 +117,7 @@ std::string cell(const Outcome& out) {
 
 std::string answer(const Row& row, const std::string& profile, const Wire& wire) {
     auto cpu = cpu_for(profile);
-    protocol::Engine engine(cpu);
+    auto engine = engine_for(cpu);
     Connection connection{engine};
     auto probe = probe_for(row, cpu.profile());
     if (cpu.profile().password_max_length) connection.send(wire, password_req(0x1630, password_for(cpu.profile())));

@@ -11,7 +11,7 @@ namespace {
 config::ServerConfig parse(const std::string& json) { return config::parse_server_config(json, "test.json"); }
 
 RuntimeConfig checked(const std::string& json, const std::string& profile = "R08CPU") {
-    return config::checked_runtime_config(parse(json).cpu, config::load_profile(profile));
+    return config::checked_runtime_config(parse(json).cpu, config::load_profile(profile).cpu);
 }
 
 }  // namespace

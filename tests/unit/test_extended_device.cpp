@@ -179,7 +179,7 @@ TEST_CASE("§7.6 Example DZ: D100+Z4 (D100Z4), in 0403/0080", "[extended][spec]"
         CHECK(wire.exchange(cpu, random_write_words_req(0x0080, {{dz, 0x0BAD}}, {})) == wire.expect(ok()));
         CHECK(cpu.memory().value(spec_of("D"), 104) == 0x0BAD);
         CHECK(cpu.memory().value(spec_of("D"), 100) == 100);
-        protocol::Engine engine(cpu);
+        auto engine = engine_for(cpu);
         Connection conn{engine};
         CHECK(conn.exchange(wire, monitor_entry_req(0x0080, {dz}, {})) == wire.expect(ok()));
         CHECK(conn.exchange(wire, monitor_execute_req()) == wire.expect(ok(word(0x0BAD))));
@@ -278,7 +278,7 @@ TEST_CASE("Extended forms in every device command reach the same memory", "[exte
         CHECK(cpu.memory().value(spec_of("G"), 102) == 3);
         CHECK(wire.exchange(cpu, word(0x0401) + word(0x0082) + cpu_g("G100") + word(3)) ==
               wire.expect(ok(words({1, 2, 3}))));
-        protocol::Engine engine(cpu);
+        auto engine = engine_for(cpu);
         Connection conn{engine};
         CHECK(conn.exchange(wire, monitor_entry_req(0x0082, {cpu_g("G101")}, {})) == wire.expect(ok()));
         CHECK(conn.exchange(wire, monitor_execute_req()) == wire.expect(ok(word(2))));

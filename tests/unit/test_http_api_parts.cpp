@@ -61,7 +61,7 @@ TEST_CASE("device views: strings are bytes, NUL-terminated, low byte first", "[h
 }
 
 TEST_CASE("device views: spans, defaults and checks", "[http]") {
-    slmp::devicemodel::Cpu cpu(slmp::config::load_profile("R08CPU"));
+    slmp::devicemodel::Cpu cpu(slmp::config::load_profile("R08CPU").cpu);
     auto m = parse_device("M0");
     CHECK(default_view(*m.spec) == View::Bits);
     CHECK(make_run(cpu, m, View::Words, 2).devices == 32);

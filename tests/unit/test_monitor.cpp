@@ -33,7 +33,7 @@ Payload register_d(std::uint32_t n, std::uint16_t sub = 0x0000) {
 TEST_CASE("§6.5/§6.6 Example EM then Execute Monitor", "[monitor][spec]") {
     auto cpu = make_cpu("R08CPU");
     load_example_rr(cpu);
-    protocol::Engine engine(cpu);
+    auto engine = engine_for(cpu);
     Connection conn{engine};
     auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
     CHECK(wire.data(monitor_entry_req(
@@ -64,7 +64,7 @@ TEST_CASE("§6.5/§6.6 Example EM then Execute Monitor", "[monitor][spec]") {
 TEST_CASE("The monitor registration belongs to the connection", "[monitor][session]") {
     auto cpu = make_cpu("R08CPU");
     for (std::uint32_t n = 0; n < 20; ++n) cpu.memory().set_value(spec_of("D"), n, 0x100 + n);
-    protocol::Engine engine(cpu);
+    auto engine = engine_for(cpu);
     Connection a{engine}, b{engine};
     auto wire = GENERATE(kBinary3E, kAscii4E);
 
@@ -111,7 +111,7 @@ TEST_CASE("The monitor registration belongs to the connection", "[monitor][sessi
 TEST_CASE("Index registers in a registration are applied at every 0802", "[monitor][extended]") {
     auto cpu = make_cpu("R08CPU");
     for (std::uint32_t n = 0; n < 200; ++n) cpu.memory().set_value(spec_of("D"), n, 0x1000 + n);
-    protocol::Engine engine(cpu);
+    auto engine = engine_for(cpu);
     Connection conn{engine};
     auto wire = GENERATE(kBinary3E, kAscii3E);
     auto form = GENERATE(Form::Q, Form::IQR);
@@ -152,7 +152,7 @@ TEST_CASE("0801 points: below, at and above per profile", "[monitor][limits][pro
     auto wire = GENERATE(kBinary3E, kAscii3E);
     auto cpu = make_cpu(c.profile);
     for (std::uint32_t n = 0; n < 200; ++n) cpu.memory().set_value(spec_of("D"), n, n);
-    protocol::Engine engine(cpu);
+    auto engine = engine_for(cpu);
     for (auto form : {Form::Q, Form::IQR}) {
         if (form == Form::IQR && !c.iqr_form) continue;
         for (bool extended : {false, true}) {
@@ -188,7 +188,7 @@ TEST_CASE("FX5U does not support 0801/0802 (C059)", "[monitor][profiles]") {
 
 TEST_CASE("0801 refuses the timer/counter contacts, coils and long values with 4030", "[monitor][devices]") {
     auto cpu = make_cpu("R08CPU");
-    protocol::Engine engine(cpu);
+    auto engine = engine_for(cpu);
     auto wire = GENERATE(kBinary3E, kAscii3E);
     // §6.5's list, every one of them; TN, STN and CN are fine.
     for (const char* symbol :

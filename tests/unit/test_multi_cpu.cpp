@@ -15,8 +15,8 @@ namespace {
 struct MultiCpu {
     Cpu one = make_cpu("R08CPU");
     Cpu two = make_cpu("R120PCPU");
-    protocol::Engine engine{one};
-    MultiCpu() { engine.add_cpu(2, two); }
+    protocol::Engine engine{one, port_of(one)};
+    MultiCpu() { engine.add_cpu(2, two, port_of(two)); }
 };
 
 }  // namespace

@@ -21,7 +21,7 @@ struct Client {
     protocol::Session session{};
     explicit Client(std::uint64_t id) { session.id = id; }
     std::string exchange(devicemodel::Cpu& cpu, const Wire& w, const Payload& p) {
-        return w.show(protocol::Engine(cpu).process(w.request(p), DataCodePolicy::Auto, session));
+        return w.show(engine_for(cpu).process(w.request(p), DataCodePolicy::Auto, session));
     }
 };
 

@@ -27,7 +27,7 @@ struct Client {
     protocol::Session session{};
     Client(std::uint64_t i) : id(i) { session.id = i; }
     Outcome send(devicemodel::Cpu& cpu, const Wire& w, const Payload& p) {
-        return protocol::Engine(cpu).process(w.request(p), DataCodePolicy::Auto, session);
+        return engine_for(cpu).process(w.request(p), DataCodePolicy::Auto, session);
     }
     std::string exchange(devicemodel::Cpu& cpu, const Wire& w, const Payload& p) { return w.show(send(cpu, w, p)); }
 };

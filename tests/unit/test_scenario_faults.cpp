@@ -23,7 +23,7 @@ struct FakeStation : scenarios::Station {
 };
 
 struct Rig {
-    explicit Rig(const std::string& json) : cpu(config::load_profile("R08CPU")) {
+    explicit Rig(const std::string& json) : cpu(config::load_profile("R08CPU").cpu) {
         std::vector<scenarios::Scenario> list;
         list.push_back(scenario(json));
         runner = std::make_unique<scenarios::ScenarioRunner>(std::move(list), cpu, nullptr, &station);
@@ -32,7 +32,7 @@ struct Rig {
     // Decodes `frame` as the station does; the Incoming stays alive for after().
     scenarios::Plan plan(const Bytes& frame, const std::string& client = "127.0.0.1", std::uint64_t connection = 1,
                          scenarios::Transport transport = scenarios::Transport::Tcp) {
-        seen.push_back({protocol::Engine(cpu).decode(frame, protocol::DataCodePolicy::Auto), {transport, client, 50000, 5000},
+        seen.push_back({engine_for(cpu).decode(frame, protocol::DataCodePolicy::Auto), {transport, client, 50000, 5000},
                         connection});
         return runner->before(seen.back(), frame);
     }

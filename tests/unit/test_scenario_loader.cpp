@@ -34,7 +34,7 @@ TEST_CASE("scenario loader: every shipped example loads and fits its CPU", "[sce
         INFO(entry.path().string());
         auto s = scenarios::load_scenario(entry.path());
         CHECK_FALSE(s.description.empty());
-        devicemodel::Cpu cpu(config::load_profile("R08CPU"));
+        devicemodel::Cpu cpu(config::load_profile("R08CPU").cpu);
         std::vector<scenarios::Scenario> list{s};
         CHECK_NOTHROW(scenarios::ScenarioRunner(std::move(list), cpu, nullptr));
         ++examples;

@@ -108,11 +108,11 @@ TEST_CASE("replay: a scenario answers from its recording, misses go by on_miss",
     }
     auto run_with = [&](const std::string& replay, const Bytes& frame) {
         std::ofstream(dir / "replay.json") << R"({"replay": )" << replay << "}";
-        devicemodel::Cpu cpu(config::load_profile("R08CPU"));
+        devicemodel::Cpu cpu(config::load_profile("R08CPU").cpu);
         std::vector<scenarios::Scenario> list{scenarios::load_scenario(dir / "replay.json")};
         scenarios::ScenarioRunner runner(std::move(list), cpu, nullptr);
         runner.scan(at(0));
-        scenarios::Incoming incoming{protocol::Engine(cpu).decode(frame, protocol::DataCodePolicy::Auto), {}, 0};
+        scenarios::Incoming incoming{engine_for(cpu).decode(frame, protocol::DataCodePolicy::Auto), {}, 0};
         return runner.before(incoming, frame);   // the plan is read only, never passed to after()
     };
     auto hit = run_with(R"({"file": "session.jsonl"})", kRead3E);
@@ -126,7 +126,7 @@ TEST_CASE("replay: a scenario answers from its recording, misses go by on_miss",
     CHECK(hex(*coded.answer) == "D0 00 00 FF FF 03 00 0B 00 59 C0 00 FF FF 03 00 01 04 00 00");
 
     std::ofstream(dir / "missing.json") << R"({"replay": {"file": "nope.jsonl"}})";
-    devicemodel::Cpu cpu(config::load_profile("R08CPU"));
+    devicemodel::Cpu cpu(config::load_profile("R08CPU").cpu);
     std::vector<scenarios::Scenario> list{scenarios::load_scenario(dir / "missing.json")};
     // The message names the scenario file, the JSON pointer of the key to fix, and the recording.
     CHECK_THROWS_WITH(scenarios::ScenarioRunner(std::move(list), cpu, nullptr),

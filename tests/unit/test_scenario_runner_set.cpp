@@ -17,14 +17,14 @@ namespace {
 const Bytes kRead3E = bytes("50 00 00 FF FF 03 00 0C 00 10 00 01 04 00 00 64 00 00 A8 01 00");   // 0401 D100 x1
 
 struct Rig {
-    Rig() : cpu(config::load_profile("R08CPU")) {}
+    Rig() : cpu(config::load_profile("R08CPU").cpu) {}
     void add(std::vector<std::string> json) {
         std::vector<scenarios::Scenario> list;
         for (const auto& j : json) list.push_back(scenarios::parse_scenario(j, "s" + std::to_string(files++) + ".json"));
         set.add(std::move(list), cpu, nullptr, nullptr);
     }
     scenarios::Plan plan() {
-        seen.push_back({protocol::Engine(cpu).decode(kRead3E, protocol::DataCodePolicy::Auto), {}, 0});
+        seen.push_back({engine_for(cpu).decode(kRead3E, protocol::DataCodePolicy::Auto), {}, 0});
         return set.before(seen.back(), kRead3E);
     }
     std::vector<std::string> names() {

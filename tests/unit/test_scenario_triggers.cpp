@@ -14,13 +14,13 @@ namespace {
 // Runs one request through the runner's hook and the real engine, as the server does.
 protocol::Outcome handle(ScenarioRig& rig, const std::vector<std::uint8_t>& frame, const std::string& client = "127.0.0.1",
                          std::vector<std::uint8_t>* sent = nullptr) {
-    scenarios::Incoming incoming{protocol::Engine(rig.cpu).decode(frame, protocol::DataCodePolicy::Auto),
+    scenarios::Incoming incoming{engine_for(rig.cpu).decode(frame, protocol::DataCodePolicy::Auto),
                                  {protocol::Transport::Tcp, client, 50000, 5000}, 1};
     auto plan = rig.runner->before(incoming, frame);
     protocol::Outcome outcome;
     if (plan.pass()) {
         protocol::Session session;
-        outcome = protocol::Engine(rig.cpu).process(frame, protocol::DataCodePolicy::Auto, session);
+        outcome = engine_for(rig.cpu).process(frame, protocol::DataCodePolicy::Auto, session);
     } else if (plan.answer) {
         outcome.action = protocol::Outcome::Action::Respond;
         outcome.response = *plan.answer;

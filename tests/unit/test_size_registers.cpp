@@ -103,7 +103,7 @@ TEST_CASE("R08CPU publishes the sizes observed on a real R08CPU", "[size_registe
 }
 
 TEST_CASE("size registers follow a configured size", "[size_registers]") {
-    auto profile = config::load_profile("R08CPU");
+    auto profile = config::load_profile("R08CPU").cpu;
     profile.sizes[static_cast<std::size_t>(Area::D)] = 20000;
     profile.sizes[static_cast<std::size_t>(Area::ZR)] = 70000;
     devicemodel::Cpu cpu(profile);

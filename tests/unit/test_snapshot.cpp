@@ -80,7 +80,7 @@ TEST_CASE("snapshot: damage anywhere is refused and nothing is restored", "[snap
 TEST_CASE("snapshot: a changed device size restores the common part with a warning", "[snapshot]") {
     auto source = filled();
     auto bytes = encode_snapshot(source.memory(), "R08CPU");
-    auto profile = config::load_profile("R08CPU");
+    auto profile = config::load_profile("R08CPU").cpu;
     profile.sizes[static_cast<std::size_t>(Area::D)] = 50;
     Cpu target(profile);
     auto r = restore_snapshot(bytes, target.memory(), "R08CPU", LatchMap{}, RestoreScope::All);

@@ -19,7 +19,7 @@ struct StreamResult {
 StreamResult feed(devicemodel::Cpu& cpu, const Bytes& stream, const Wire& shown_as) {
     StreamResult result;
     protocol::Session session;
-    protocol::Engine engine(cpu);
+    auto engine = engine_for(cpu);
     std::span<const std::uint8_t> rest(stream);
     while (!rest.empty()) {
         auto out = engine.process(rest, DataCodePolicy::Auto, session);

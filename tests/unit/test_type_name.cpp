@@ -36,7 +36,7 @@ TEST_CASE("0101 on an R08CPU: R08CPU + 10 spaces, code 4801", "[type_name][spec]
 
 TEST_CASE("0101: the manual's Q02UCPU example", "[type_name][spec]") {
     // A QJ71E71-connected Q CPU answers 0101; rename it to the manual's model.
-    auto profile = config::load_profile("Q06UDVCPU-QJ71E71");
+    auto profile = config::load_profile("Q06UDVCPU-QJ71E71").cpu;
     profile.type_name = "Q02UCPU";
     profile.model_code = 0x0263;
     devicemodel::Cpu cpu(profile);

@@ -1,0 +1,68 @@
+// What one CPU's SLMP port answers differently from another's, as plain data:
+// the frames it serves, what it does with requests it does not serve, its end
+// codes and its limits. Loaded with the CPU's facts from the same profile file
+// (config/profiles/*.json, by config/); the CPU's own facts — identity, device
+// sizes, special registers, password rule — are devicemodel::CpuProfile.
+// Facts: ../shared/spec/hardware-behaviour.md §2–§4, §7.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "devicemodel/device_table.hpp"
+
+namespace slmp::protocol {
+
+// How a port reacts to a request it does not serve.
+struct Refusal {
+    enum class Kind : std::uint8_t { Serve, EndCode, Close, Silence };
+    Kind kind = Kind::Serve;      // Serve: the port serves the request normally
+    std::uint16_t end_code = 0;   // for EndCode
+};
+
+struct PointLimit {
+    std::uint32_t max = 0;
+    std::uint16_t end_code = 0;
+};
+
+// A limit that depends on the subcommand family: Q form (00□0/00□1) or iQ-R
+// form (00□2/00□3). With the Q form's extended subcommands (0080/0081) each
+// point or block counts twice (slmp-frames-and-devices.md §6.3–§6.8, *1).
+struct FormLimit {
+    std::uint32_t q = 0;
+    std::uint32_t iqr = 0;
+    std::uint16_t end_code = 0;
+};
+
+struct PortProfile {
+    Refusal frame_4e;                 // what a 4E request gets
+    Refusal iqr_subcommands;          // what 0002/0003 (iQ-R form) requests get
+    // Commands refused beyond what the port family refuses (the command table's families).
+    std::vector<std::uint16_t> unsupported_commands;
+    std::uint16_t not_supported_code = 0xC059;
+
+    std::uint16_t out_of_range_code = 0x4031;      // start or span past the device size
+    std::uint16_t not_accessible_code = 0x4030;    // device this command/path may not touch
+    std::uint16_t unknown_device_code = 0xC05B;    // device code the CPU does not know
+    std::uint16_t bad_unit_code = 0xC05C;          // bit units on a word device and the like
+
+    PointLimit batch_words;           // 0401/1401 word units
+    PointLimit batch_bits_binary;     // 0401/1401 bit units, binary code
+    PointLimit batch_bits_ascii;      // 0401/1401 bit units, ASCII code
+    std::uint32_t loopback_max_bytes = 960;
+    FormLimit random_read_points;     // 0403: word + double-word points
+    FormLimit random_write_weight;    // 1402 word units: 12·words + 14·double words
+    FormLimit random_write_bits;      // 1402 bit units: points
+    FormLimit monitor_points;         // 0801: word + double-word points
+    FormLimit block_count;            // 0406/1406: word blocks + bit blocks
+    PointLimit block_points;          // 0406/1406: total points (1406 adds 4 or 9 per block)
+    // Over-limit 008x random/monitor access answers this instead (QJ71E71-100:
+    // 4080); 0 = the limit's own code.
+    std::uint16_t extended_over_limit_code = 0;
+    Refusal mixed_block_write;        // 1406 with word and bit blocks in one request
+
+    std::vector<devicemodel::Area> read_only;   // S over built-in Ethernet
+    bool zr_ascii_hex = false;        // ASCII frames number ZR in hex (the manuals' form)
+};
+
+}  // namespace slmp::protocol
