@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "station/station.hpp"
 #include "control/router.hpp"
+#include "station/station.hpp"
 
 namespace slmp::control {
 

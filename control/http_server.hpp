@@ -10,11 +10,11 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
-#include "station/station.hpp"
 #include "control/api.hpp"
 #include "control/event_hub.hpp"
 #include "control/metrics.hpp"
 #include "control/router.hpp"
+#include "station/station.hpp"
 
 namespace slmp::control {
 

@@ -7,9 +7,9 @@
 // DELETE /api/scenarios/{name} — stops it; its devices keep their values.
 // How several scenarios run side by side: scenarios/runner_set.hpp.
 #include "config/config.hpp"
-#include "scenarios/loader.hpp"
 #include "control/api.hpp"
 #include "control/event_hub.hpp"
+#include "scenarios/loader.hpp"
 
 namespace slmp::control {
 

@@ -10,8 +10,8 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
-#include "station/station.hpp"
 #include "server/tcp_session.hpp"
+#include "station/station.hpp"
 
 namespace slmp::server {
 

@@ -1,5 +1,6 @@
-// The one hook between the listeners and the engine (STYLE.md §6.21): every
-// request, TCP or UDP, goes through ScenarioHook::process(), which asks the
+// The one hook between the station and the engine (STYLE.md §6.21): every
+// request, TCP or UDP, goes through ScenarioHook::process() (from
+// Station::handle()), which asks the
 // scenarios what to do before the engine (forced end code, recorded answer,
 // no response, close, reset, power cut), runs the engine, and asks again
 // after it (corruption, delay, split, coalesce), and records the exchange
@@ -24,7 +25,7 @@
 
 namespace slmp::station {
 
-// What a listener does with one frame.
+// What a transport does with one frame.
 struct Handled {
     protocol::Outcome outcome;
     scenarios::Delivery delivery;   // how to send outcome.response
@@ -39,7 +40,7 @@ public:
     // Scenarios start running against `cpu` (checks their devices; throws config::ConfigError).
     void start(std::vector<scenarios::Scenario> scenarios, devicemodel::Cpu& cpu, scenarios::Station& station);
     // Scenarios loaded later (HTTP API) run against this CPU and station;
-    // start() attaches its own. The server attaches them even with no --scenario.
+    // start() attaches its own. The station attaches them even with no --scenario.
     void attach(devicemodel::Cpu& cpu, scenarios::Station& station);
     // Starts one more scenario while the server runs, with its initial devices,
     // switch and error applied now (throws config::ConfigError, and then nothing changed).
