@@ -17,7 +17,9 @@ Station::Station(devicemodel::CpuProfile profile, protocol::EngineOptions option
     : cpu_(std::move(profile)), engine_(cpu_, options) {}
 
 Station::Station(boost::asio::io_context& io, const config::ServerConfig& config)
-    : config_(config), cpu_(config::resolve_profile(config)), engine_(cpu_, protocol::EngineOptions{config.max_request_bytes}) {
+    : config_(config),
+      cpu_(config::resolve_profile(config)),
+      engine_(cpu_, protocol::EngineOptions{config.max_request_bytes}) {
     pending_scenarios_ = load_scenarios();   // their initial state joins config_ first
     config::apply_initial_values(cpu_, config_);
     config::attach_hardware(cpu_, config_);
