@@ -15,7 +15,7 @@
 #include <deque>
 #include <vector>
 
-#include "server/asio.hpp"
+#include "station/asio.hpp"
 
 #include "scenarios/faults.hpp"
 

@@ -2,14 +2,16 @@
 
 #include <spdlog/spdlog.h>
 
+#include "station/log_exception.hpp"
+
 namespace slmp::server {
 
 namespace asio = boost::asio;
 using asio::ip::tcp;
 
-TcpListener::TcpListener(asio::io_context& io, Core& core, const config::PortConfig& port,
+TcpListener::TcpListener(asio::io_context& io, station::Station& station, const config::PortConfig& port,
                          const asio::ip::address& bind)
-    : io_(io), core_(core), config_(port), endpoint_(bind, port.port), acceptor_(io) {
+    : io_(io), station_(station), config_(port), endpoint_(bind, port.port), acceptor_(io) {
     listen();   // throws boost::system::system_error when the port cannot be had
     endpoint_ = acceptor_.local_endpoint();
 }
@@ -19,14 +21,9 @@ void TcpListener::listen() {
     acceptor_.set_option(tcp::acceptor::reuse_address(true));
     acceptor_.bind(endpoint_);
     acceptor_.listen();
-    asio::co_spawn(io_, accept_loop(), [this](std::exception_ptr e) {
-        if (!e) return;
-        try {
-            std::rethrow_exception(e);
-        } catch (const std::exception& ex) {
-            spdlog::error("TCP port {}: accept loop failed: {}", port(), ex.what());
-        }
-    });
+    // The bound port (also when 0 was asked for: endpoint_ learns it only after the first listen()).
+    const auto bound = acceptor_.local_endpoint().port();
+    asio::co_spawn(io_, accept_loop(), station::log_exception("TCP port " + std::to_string(bound) + ": accept loop failed"));
 }
 
 asio::awaitable<void> TcpListener::accept_loop() {
@@ -38,7 +35,7 @@ asio::awaitable<void> TcpListener::accept_loop() {
             spdlog::warn("TCP port {}: accept failed: {}", port(), ec.message());
             continue;
         }
-        auto session = std::make_shared<TcpSession>(std::move(socket), core_, config_,
+        auto session = std::make_shared<TcpSession>(std::move(socket), station_, config_,
                                                     [this](TcpSession* s) { session_closed(s); });
         sessions_.emplace(session.get(), session);
         session->start();

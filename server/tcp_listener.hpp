@@ -7,23 +7,23 @@
 #include <memory>
 #include <unordered_map>
 
-#include "server/asio.hpp"
+#include "station/asio.hpp"
 
 #include "config/config.hpp"
-#include "server/core.hpp"
 #include "server/tcp_session.hpp"
+#include "station/station.hpp"
 
 namespace slmp::server {
 
 class TcpListener {
 public:
-    TcpListener(boost::asio::io_context& io, Core& core, const config::PortConfig& port,
+    TcpListener(boost::asio::io_context& io, station::Station& station, const config::PortConfig& port,
                 const boost::asio::ip::address& bind);
 
     std::uint16_t port() const { return endpoint_.port(); }   // the bound port, also when 0 was asked for
     void stop();
     // A scenario's power cut or refusal period: while true the port is closed
-    // (clients are refused); afterwards it listens again (scenario_station.hpp).
+    // (clients are refused); afterwards it listens again (station/scenario_station.hpp).
     void set_refusing(bool refusing);
 
 private:
@@ -33,7 +33,7 @@ private:
     void session_closed(TcpSession* session);
 
     boost::asio::io_context& io_;
-    Core& core_;
+    station::Station& station_;
     config::PortConfig config_;
     boost::asio::ip::tcp::endpoint endpoint_;
     boost::asio::ip::tcp::acceptor acceptor_;

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "server/outbox.hpp"
+#include "station/log_exception.hpp"
 
 namespace slmp::server {
 
@@ -20,40 +21,36 @@ protocol::DataCodePolicy to_policy(config::DataCode code) {
     return protocol::DataCodePolicy::Auto;
 }
 
-TcpSession::TcpSession(asio::ip::tcp::socket socket, Core& core, const config::PortConfig& port,
+TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Station& station, const config::PortConfig& port,
                        std::function<void(TcpSession*)> on_closed)
     : socket_(std::move(socket)),
-      core_(core),
+      station_(station),
       policy_(to_policy(port.data_code)),
       idle_timeout_(port.idle_timeout_ms),
       idle_timer_(socket_.get_executor()),
       on_closed_(std::move(on_closed)) {
-    session_.id = core_.next_session_id++;
+    session_.id = station_.next_session_id();
     boost::system::error_code ec;
-    auto remote = socket_.remote_endpoint(ec);
-    peer_ = ec ? "tcp:?" : "tcp:" + remote.address().to_string() + ":" + std::to_string(remote.port());
-    local_port_ = socket_.local_endpoint(ec).port();
+    peer_.transport = protocol::Transport::Tcp;
+    if (auto remote = socket_.remote_endpoint(ec); ec) {
+        peer_.address = "?";
+    } else {
+        peer_.address = remote.address().to_string();
+        peer_.port = remote.port();
+    }
+    peer_.local_port = socket_.local_endpoint(ec).port();
     socket_.set_option(asio::ip::tcp::no_delay(true), ec);
 }
 
 void TcpSession::start() {
-    spdlog::info("{} connected (connection {})", peer_, session_.id);
+    spdlog::info("{} connected (connection {})", peer_.text(), session_.id);
     last_activity_ = std::chrono::steady_clock::now();
     auto self = shared_from_this();
     std::weak_ptr<TcpSession> weak = self;
-    core_.activity.opened({session_.id, peer_, config::Transport::Tcp, local_port_, std::chrono::system_clock::now(), 0,
-                           [weak](const std::string& why) {
-                               if (auto session = weak.lock()) session->close(why);
-                           }});
-    auto log_crash = [self](std::exception_ptr e) {
-        if (!e) return;
-        try {
-            std::rethrow_exception(e);
-        } catch (const std::exception& ex) {
-            spdlog::error("{} session failed: {}", self->peer_, ex.what());
-            self->finish("internal error");
-        }
-    };
+    station_.activity().opened({session_.id, peer_, std::chrono::system_clock::now(), 0, [weak](const std::string& why) {
+                                    if (auto session = weak.lock()) session->close(why);
+                                }});
+    auto log_crash = station::log_exception(peer_.text() + " session failed", [self] { self->finish("internal error"); });
     asio::co_spawn(socket_.get_executor(), serve(), log_crash);
     if (idle_timeout_.count() > 0) asio::co_spawn(socket_.get_executor(), watch_idle(), log_crash);
 }
@@ -74,8 +71,8 @@ void TcpSession::finish(const std::string& why) {
     if (closed_) return;
     closed_ = true;
     close();
-    spdlog::info("{} disconnected (connection {}): {}", peer_, session_.id, why);
-    core_.activity.closed(session_.id, why);
+    spdlog::info("{} disconnected (connection {}): {}", peer_.text(), session_.id, why);
+    station_.activity().closed(session_.id, why);
     on_closed_(this);
 }
 
@@ -103,14 +100,9 @@ awaitable<void> TcpSession::serve() {
         bool reset_after = false;
         while (offset < pending.size()) {
             auto input = std::span<const std::uint8_t>(pending).subspan(offset);
-            core_.activity.request_starting();
-            auto started = std::chrono::steady_clock::now();
-            auto handled = core_.scenario.process(core_.engine, input, policy_, session_, {config::Transport::Tcp, peer_, local_port_});
+            auto handled = station_.handle(input, policy_, session_, peer_);
             auto& outcome = handled.outcome;
             if (outcome.action == Outcome::Action::NeedMore) break;
-            log_outcome(peer_, outcome);
-            core_.activity.request({session_.id, config::Transport::Tcp, peer_, input.first(outcome.consumed), outcome,
-                                    std::chrono::steady_clock::now() - started});
             offset += outcome.consumed;
             if (outcome.action == Outcome::Action::Respond) outbox.add(std::move(outcome.response), handled.delivery);
             if (outcome.action == Outcome::Action::Close) {
@@ -131,7 +123,7 @@ awaitable<void> TcpSession::serve() {
             close_reason_ = "write failed: " + ec.message();
             break;
         }
-        if (restart_after && core_.on_restart) core_.on_restart();
+        if (restart_after) station_.restart();
         if (reset_after) {   // a scenario's "reset": RST instead of FIN (SO_LINGER 0, no shutdown first)
             socket_.set_option(asio::socket_base::linger(true, 0), ec);
             socket_.close(ec);

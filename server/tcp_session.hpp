@@ -9,22 +9,23 @@
 #include <memory>
 #include <string>
 
-#include "server/asio.hpp"
+#include "station/asio.hpp"
 
 #include "config/config.hpp"
-#include "server/core.hpp"
+#include "protocol/peer.hpp"
+#include "station/station.hpp"
 
 namespace slmp::server {
 
 class TcpSession : public std::enable_shared_from_this<TcpSession> {
 public:
-    TcpSession(boost::asio::ip::tcp::socket socket, Core& core, const config::PortConfig& port,
+    TcpSession(boost::asio::ip::tcp::socket socket, station::Station& station, const config::PortConfig& port,
                std::function<void(TcpSession*)> on_closed);
 
     void start();
     void close();   // from the server at shutdown, or the watchdog
     void close(const std::string& why);   // from the HTTP API; `why` is logged
-    const std::string& peer() const { return peer_; }
+    const protocol::Peer& peer() const { return peer_; }
 
 private:
     boost::asio::awaitable<void> serve();
@@ -32,14 +33,13 @@ private:
     void finish(const std::string& why);
 
     boost::asio::ip::tcp::socket socket_;
-    Core& core_;
+    station::Station& station_;
     protocol::DataCodePolicy policy_;
     std::chrono::milliseconds idle_timeout_;
     std::chrono::steady_clock::time_point last_activity_;
     boost::asio::steady_timer idle_timer_;
     protocol::Session session_;
-    std::string peer_;
-    std::uint16_t local_port_ = 0;
+    protocol::Peer peer_;   // the client, and the simulator's port it reached
     std::string close_reason_ = "closed by the client";
     std::function<void(TcpSession*)> on_closed_;
     bool closed_ = false;

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "server/asio.hpp"
+#include "station/asio.hpp"
 
 #include "scenarios/faults.hpp"
 

@@ -4,6 +4,7 @@
 
 #include "server/tcp_session.hpp"
 #include "server/udp_delivery.hpp"
+#include "station/log_exception.hpp"
 
 namespace slmp::server {
 
@@ -11,19 +12,12 @@ namespace asio = boost::asio;
 using asio::ip::udp;
 using protocol::Outcome;
 
-UdpListener::UdpListener(asio::io_context& io, Core& core, const config::PortConfig& port,
+UdpListener::UdpListener(asio::io_context& io, station::Station& station, const config::PortConfig& port,
                          const asio::ip::address& bind)
-    : core_(core), policy_(to_policy(port.data_code)), socket_(io, udp::endpoint(bind, port.port)) {
+    : station_(station), policy_(to_policy(port.data_code)), socket_(io, udp::endpoint(bind, port.port)) {
     port_ = socket_.local_endpoint().port();
-    session_.id = core_.next_session_id++;
-    asio::co_spawn(io, serve(), [this](std::exception_ptr e) {
-        if (!e) return;
-        try {
-            std::rethrow_exception(e);
-        } catch (const std::exception& ex) {
-            spdlog::error("UDP port {}: receive loop failed: {}", port_, ex.what());
-        }
-    });
+    session_.id = station_.next_session_id();
+    asio::co_spawn(io, serve(), station::log_exception("UDP port " + std::to_string(port_) + ": receive loop failed"));
 }
 
 asio::awaitable<void> UdpListener::serve() {
@@ -38,32 +32,27 @@ asio::awaitable<void> UdpListener::serve() {
             spdlog::debug("UDP port {}: receive failed: {}", port_, ec.message());
             continue;
         }
-        auto peer = "udp:" + sender.address().to_string() + ":" + std::to_string(sender.port());
+        const protocol::Peer peer{protocol::Transport::Udp, sender.address().to_string(), sender.port(), port_};
         auto input = std::span<const std::uint8_t>(datagram.data(), n);
-        core_.activity.request_starting();
-        auto started = std::chrono::steady_clock::now();
-        auto handled = core_.scenario.process(core_.engine, input, policy_, session_, {config::Transport::Udp, peer, port_});
+        auto handled = station_.handle(input, policy_, session_, peer);
         auto& outcome = handled.outcome;
         if (outcome.action == Outcome::Action::NeedMore) {
             spdlog::debug("{} datagram of {} byte(s) holds no whole request frame (check the request data length); "
-                          "not answered", peer, n);
+                          "not answered", peer.text(), n);
             continue;
         }
-        log_outcome(peer, outcome);
-        core_.activity.request({session_.id, config::Transport::Udp, peer, input.first(outcome.consumed), outcome,
-                                std::chrono::steady_clock::now() - started});
         if (outcome.consumed < n)
-            spdlog::debug("{} {} byte(s) after the request frame ignored", peer, n - outcome.consumed);
-        if (outcome.action == Outcome::Action::Restart && core_.on_restart) core_.on_restart();
+            spdlog::debug("{} {} byte(s) after the request frame ignored", peer.text(), n - outcome.consumed);
+        if (outcome.action == Outcome::Action::Restart) station_.restart();
         if (outcome.action != Outcome::Action::Respond) continue;
         co_await send_datagrams(socket_, sender, outcome.response, handled.delivery, ec);
-        if (ec) spdlog::debug("{} send failed: {}", peer, ec.message());
+        if (ec) spdlog::debug("{} send failed: {}", peer.text(), ec.message());
     }
 }
 
 void UdpListener::restart_session() {
     session_ = protocol::Session{};
-    session_.id = core_.next_session_id++;
+    session_.id = station_.next_session_id();
 }
 
 void UdpListener::stop() {

@@ -5,16 +5,16 @@
 #include <array>
 #include <cstdint>
 
-#include "server/asio.hpp"
+#include "station/asio.hpp"
 
 #include "config/config.hpp"
-#include "server/core.hpp"
+#include "station/station.hpp"
 
 namespace slmp::server {
 
 class UdpListener {
 public:
-    UdpListener(boost::asio::io_context& io, Core& core, const config::PortConfig& port,
+    UdpListener(boost::asio::io_context& io, station::Station& station, const config::PortConfig& port,
                 const boost::asio::ip::address& bind);
 
     std::uint16_t port() const { return port_; }
@@ -26,7 +26,7 @@ public:
 private:
     boost::asio::awaitable<void> serve();
 
-    Core& core_;
+    station::Station& station_;
     protocol::DataCodePolicy policy_;
     boost::asio::ip::udp::socket socket_;
     protocol::Session session_;

@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "config/config.hpp"
-#include "server/core.hpp"
-#include "server/http/device_view.hpp"
-#include "server/http/metrics.hpp"
-#include "server/http/router.hpp"
+#include "control/device_view.hpp"
+#include "control/metrics.hpp"
+#include "control/router.hpp"
+#include "station/station.hpp"
 
-using namespace slmp::server;
-using namespace slmp::server::http;
+using namespace slmp::station;
+using namespace slmp::control;
 
 TEST_CASE("router: captures, query parameters, 404 and 405", "[http]") {
     Router router;
@@ -87,8 +87,8 @@ TEST_CASE("device views: spans, defaults and checks", "[http]") {
 }
 
 TEST_CASE("metrics: text after known activity", "[http][metrics]") {
-    Core core(slmp::config::load_profile("R08CPU"), {});
-    Metrics metrics(core);
+    Station station(slmp::config::load_profile("R08CPU"), {});
+    Metrics metrics(station);
 
     slmp::protocol::Outcome ok;
     ok.action = slmp::protocol::Outcome::Action::Respond;
@@ -101,10 +101,13 @@ TEST_CASE("metrics: text after known activity", "[http][metrics]") {
     std::vector<std::uint8_t> frame(21);
 
     using std::chrono::microseconds;
-    core.activity.request({1, Transport::Tcp, "tcp:x", frame, ok, microseconds(30)});
-    core.activity.request({1, Transport::Tcp, "tcp:x", frame, ok, microseconds(300)});
-    core.activity.request({1, Transport::Tcp, "tcp:x", frame, refused, microseconds(2000)});
-    core.activity.request({2, Transport::Udp, "udp:x", std::span(frame).first(5), garbage, microseconds(1)});
+    const slmp::protocol::Peer tcp{Transport::Tcp, "x"};
+    const slmp::protocol::Peer udp{Transport::Udp, "x"};
+    const slmp::protocol::Request request;   // metrics count outcomes; the decoded request is not read
+    station.activity().request({1, tcp, frame, request, ok, microseconds(30)});
+    station.activity().request({1, tcp, frame, request, ok, microseconds(300)});
+    station.activity().request({1, tcp, frame, request, refused, microseconds(2000)});
+    station.activity().request({2, udp, std::span(frame).first(5), request, garbage, microseconds(1)});
 
     auto text = metrics.render();
     auto has = [&](const std::string& line) {

@@ -1,0 +1,63 @@
+#include "control/activity_json.hpp"
+
+#include "control/hex_text.hpp"
+#include "control/request_summary.hpp"
+#include "control/timestamp.hpp"
+
+namespace slmp::control {
+
+using nlohmann::json;
+using protocol::Outcome;
+
+namespace {
+
+std::string_view reaction(Outcome::Action action) {
+    switch (action) {
+        case Outcome::Action::Respond: return "answered";
+        case Outcome::Action::Close: return "closed";
+        case Outcome::Action::Restart: return "restarted";
+        case Outcome::Action::Silent:
+        case Outcome::Action::NeedMore: break;
+    }
+    return "none";
+}
+
+}  // namespace
+
+json connection_json(const station::Connection& connection) {
+    return json{{"id", connection.id},
+                {"peer", connection.peer.text()},
+                {"transport", protocol::to_string(connection.peer.transport)},
+                {"port", connection.peer.local_port},
+                {"opened", iso_time(connection.opened)},
+                {"requests", connection.requests}};
+}
+
+json request_json(const station::RequestRecord& record) {
+    const auto& outcome = record.outcome;
+    // A frame rejected before its command was read (garbage, a refused 4E
+    // header, an oversized length) has command and subcommand 0.
+    bool decoded = outcome.command != 0 || outcome.subcommand != 0;
+    json out{{"time", iso_time(std::chrono::system_clock::now())},
+             {"connection", record.connection},
+             {"transport", protocol::to_string(record.peer.transport)},
+             {"peer", record.peer.text()},
+             {"command", decoded ? json(hex4(outcome.command)) : json(nullptr)},
+             {"subcommand", decoded ? json(hex4(outcome.subcommand)) : json(nullptr)},
+             {"name", decoded ? json(std::string(command_name(outcome.command, outcome.subcommand))) : json(nullptr)},
+             {"end_code", outcome.action == Outcome::Action::Respond ? json(hex4(static_cast<std::uint16_t>(outcome.end_code)))
+                                                                    : json(nullptr)},
+             {"reaction", reaction(outcome.action)},
+             {"latency_us", std::chrono::duration<double, std::micro>(record.latency).count()},
+             {"bytes_in", record.frame.size()},
+             {"bytes_out", outcome.response.size()},
+             {"note", outcome.note}};
+    if (auto devices = decoded ? request_devices(record.request) : std::nullopt) {
+        out["device"] = devices->device;
+        out["points"] = devices->points;
+        out["unit"] = devices->unit;
+    }
+    return out;
+}
+
+}  // namespace slmp::control

@@ -1,0 +1,19 @@
+// Connections and request summaries as JSON, shared by GET /api/connections
+// and the /api/events stream so both show the same fields.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "station/activity.hpp"
+
+namespace slmp::control {
+
+// {"id", "peer", "transport", "port", "opened", "requests"}
+nlohmann::json connection_json(const station::Connection& connection);
+
+// {"time", "connection", "transport", "peer", "command", "subcommand", "name",
+//  "device", "points", "unit", "end_code", "reaction", "latency_us",
+//  "bytes_in", "bytes_out", "note"} — docs/api.md, "request" events.
+nlohmann::json request_json(const station::RequestRecord& record);
+
+}  // namespace slmp::control

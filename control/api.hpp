@@ -1,0 +1,46 @@
+// What the endpoints work on, and the functions that register them. Each
+// endpoint family lives in its own file; http_server.cpp wires them up.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "control/router.hpp"
+#include "station/station.hpp"
+
+namespace slmp::control {
+
+class EventHub;
+class Metrics;
+
+// The ports the simulator serves, for GET /api/info.
+struct PortList {
+    std::string bind;
+    std::vector<std::uint16_t> tcp;
+    std::vector<std::uint16_t> udp;
+    std::uint16_t http = 0;
+};
+
+struct Api {
+    station::Station& station;
+    EventHub& events;
+    Metrics& metrics;
+    PortList ports;
+    std::chrono::system_clock::time_point started;
+};
+
+void add_device_endpoints(Router& router, Api& api);       // /api/devices/{address}
+void add_buffer_endpoints(Router& router, Api& api);       // /api/buffer[/{module}/{address}]
+void add_scenario_endpoints(Router& router, Api& api);     // /api/scenarios[/{name}]
+void add_fault_endpoints(Router& router, Api& api);        // /api/faults[/{name}]
+void add_recording_endpoints(Router& router, Api& api);    // /api/recording
+void add_connection_endpoints(Router& router, Api& api);   // /api/connections[/{id}]
+void add_info_endpoint(Router& router, Api& api);          // /api/info
+void add_state_endpoints(Router& router, Api& api);        // /api/state
+void add_event_endpoint(Router& router, Api& api);         // /api/events
+void add_metrics_endpoint(Router& router, Api& api);       // /metrics
+void add_static_pages(Router& router);                     // / and its scripts and styles
+
+}  // namespace slmp::control

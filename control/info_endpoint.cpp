@@ -1,0 +1,62 @@
+// GET /api/info — what is being simulated and where: the profile, the device
+// sizes (as configured, so clients can build their address catalogue) and
+// the ports. docs/api.md, "Info".
+#include "control/api.hpp"
+#include "control/hex_text.hpp"
+#include "control/timestamp.hpp"
+
+namespace slmp::control {
+
+using nlohmann::json;
+
+namespace {
+
+std::string_view family_name(devicemodel::Family family) {
+    switch (family) {
+        case devicemodel::Family::IQR: return "iQ-R";
+        case devicemodel::Family::QnU: return "QnU";
+        case devicemodel::Family::L: return "L";
+        case devicemodel::Family::QJ71E71: return "QJ71E71";
+        case devicemodel::Family::IQF: return "iQ-F";
+    }
+    return "?";
+}
+
+Reply info(Api& api) {
+    const auto& profile = api.station.cpu().profile();
+    const auto& memory = api.station.cpu().memory();
+    auto sizes = json::object();
+    for (std::size_t i = 0; i < static_cast<std::size_t>(devicemodel::Area::Count); ++i) {
+        auto area = static_cast<devicemodel::Area>(i);
+        sizes[std::string(devicemodel::area_name(area))] = memory.size(area);
+    }
+    // The device symbols the API accepts, so a client (the web monitor) can
+    // parse and number addresses the way the simulator does.
+    auto devices = json::array();
+    for (const auto& spec : devicemodel::all_devices()) {
+        if (spec.extension_only) continue;
+        devices.push_back({{"symbol", spec.symbol},
+                           {"unit", spec.unit == devicemodel::Unit::Bit    ? "bit"
+                                    : spec.unit == devicemodel::Unit::Word ? "word"
+                                                                           : "dword"},
+                           {"radix", static_cast<int>(spec.radix)},
+                           {"name", spec.name}});
+    }
+    return json_reply(json{
+        {"version", "0.1.0"},
+        {"started", iso_time(api.started)},
+        {"profile", {{"name", profile.name}, {"type_name", profile.type_name}, {"model_code", hex4(profile.model_code)},
+                     {"family", family_name(profile.family)}}},
+        {"device_sizes", std::move(sizes)},
+        {"devices", std::move(devices)},
+        {"ports", {{"bind", api.ports.bind}, {"tcp", api.ports.tcp}, {"udp", api.ports.udp}, {"http", api.ports.http}}},
+    });
+}
+
+}  // namespace
+
+void add_info_endpoint(Router& router, Api& api) {
+    router.add(Verb::get, "/api/info", {}, [&api](const ApiRequest&) { return info(api); });
+}
+
+}  // namespace slmp::control

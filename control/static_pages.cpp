@@ -1,0 +1,21 @@
+// GET / and the monitor's scripts and styles (web_files.hpp). The page is
+// plain HTML/JS/CSS: no build step, no third-party code.
+#include "control/api.hpp"
+#include "control/web_files.hpp"
+
+namespace slmp::control {
+
+void add_static_pages(Router& router) {
+    for (const auto& file : web_files()) {
+        auto serve = [&file](const ApiRequest&) {
+            Reply reply;
+            reply.content_type = std::string(file.content_type);
+            reply.body = std::string(file.body);
+            return reply;
+        };
+        router.add(Verb::get, "/" + std::string(file.name), {}, serve);
+        if (file.name == "index.html") router.add(Verb::get, "/", {}, serve);
+    }
+}
+
+}  // namespace slmp::control

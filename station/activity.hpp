@@ -1,0 +1,78 @@
+// What a station reports about its traffic: every handled frame (handle()) and
+// every TCP connection that opens or closes (reported by the transport). The HTTP API's metrics, event
+// stream and connection list are observers of this; with none attached a
+// request costs one map lookup and an empty loop (no strings are built).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "protocol/engine.hpp"
+#include "protocol/peer.hpp"
+
+namespace slmp::station {
+
+using protocol::Transport;
+
+using protocol::to_string;   // "tcp", "udp"
+
+// One handled frame, as the station saw it. Valid only during the call.
+struct RequestRecord {
+    std::uint64_t connection = 0;              // TCP connection id, or the UDP port's session id
+    const protocol::Peer& peer;                // who sent it, over which transport
+    std::span<const std::uint8_t> frame;       // the request bytes the outcome consumed
+    const protocol::Request& request;          // as decoded (the same the scenarios and the engine saw)
+    const protocol::Outcome& outcome;
+    std::chrono::nanoseconds latency{};        // time spent in the engine
+};
+
+struct Connection {
+    std::uint64_t id = 0;
+    protocol::Peer peer;                       // the client, its transport and the simulator's port it reached
+    std::chrono::system_clock::time_point opened;
+    std::uint64_t requests = 0;
+    std::function<void(const std::string& why)> close;   // closes it (from the HTTP API)
+};
+
+class ActivityObserver {
+public:
+    virtual void on_request_starting() {}   // a frame is about to be handled
+    virtual void on_request(const RequestRecord&) {}
+    virtual void on_opened(const Connection&) {}
+    virtual void on_closed(const Connection&, std::string_view /*why*/) {}
+
+protected:
+    ~ActivityObserver() = default;
+};
+
+class Activity {
+public:
+    void add_observer(ActivityObserver* observer) { observers_.push_back(observer); }
+    void remove_observer(ActivityObserver* observer) { std::erase(observers_, observer); }
+
+    // Around each frame the engine handles: before it (so changes made since
+    // are not blamed on it) and after it, with its outcome.
+    void request_starting() {
+        for (auto* observer : observers_) observer->on_request_starting();
+    }
+    void request(const RequestRecord& record);
+    void opened(Connection connection);
+    void closed(std::uint64_t id, std::string_view why);
+
+    // Open TCP connections by id (ids grow, so this is also the order they opened in).
+    const std::map<std::uint64_t, Connection>& connections() const { return connections_; }
+    // Closes a connection; false when there is none with this id.
+    bool close(std::uint64_t id, const std::string& why);
+
+private:
+    std::vector<ActivityObserver*> observers_;
+    std::map<std::uint64_t, Connection> connections_;
+};
+
+}  // namespace slmp::station

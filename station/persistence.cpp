@@ -1,0 +1,69 @@
+#include "station/persistence.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "station/log_exception.hpp"
+
+#include "devicemodel/snapshot.hpp"
+
+namespace slmp::station {
+
+namespace asio = boost::asio;
+
+Persistence::Persistence(asio::io_context& io, devicemodel::Cpu& cpu, const config::PersistenceConfig& config)
+    : cpu_(cpu),
+      store_(config.state_dir),
+      interval_(static_cast<std::int64_t>(config.snapshot_interval_s * 1000)),
+      restore_all_(config.restore_all),
+      timer_(io) {}
+
+void Persistence::restore() {
+    auto bytes = store_.load();
+    if (!bytes) {
+        spdlog::info("state directory: no snapshot yet at {}; starting with fresh device memory", store_.file().string());
+        return;
+    }
+    auto scope = restore_all_ ? devicemodel::RestoreScope::All : devicemodel::RestoreScope::Latched;
+    auto result = devicemodel::restore_snapshot(*bytes, cpu_.memory(), cpu_.profile().name, cpu_.runtime().latch(), scope);
+    if (!result.ok)
+        throw config::ConfigError("state directory: " + store_.file().string() + " cannot be restored: " + result.error +
+                                  "; start with the profile it was saved with, or move the file away to start afresh");
+    for (const auto& w : result.warnings) spdlog::warn("state directory: {}", w);
+    spdlog::info("state directory: restored {} devices from {}", restore_all_ ? "all" : "latched",
+                 store_.file().string());
+}
+
+bool Persistence::save(std::string_view why) {
+    try {
+        auto started = std::chrono::steady_clock::now();
+        store_.save(devicemodel::encode_snapshot(cpu_.memory(), cpu_.profile().name));
+        spdlog::debug("state directory: snapshot saved ({}) in {} ms", why,
+                      std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - started).count());
+        return true;
+    } catch (const std::exception& e) {
+        spdlog::error("state directory: snapshot ({}) failed: {}", why, e.what());
+        return false;
+    }
+}
+
+void Persistence::start() {
+    if (interval_.count() <= 0) return;
+    asio::co_spawn(timer_.get_executor(), every_interval(), log_exception("state directory: interval snapshots stopped"));
+}
+
+void Persistence::stop() {
+    stopped_ = true;
+    timer_.cancel();
+}
+
+asio::awaitable<void> Persistence::every_interval() {
+    while (!stopped_) {
+        timer_.expires_after(interval_);
+        boost::system::error_code ec;
+        co_await timer_.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+        if (ec || stopped_) co_return;
+        save("interval");
+    }
+}
+
+}  // namespace slmp::station

@@ -1,0 +1,42 @@
+// Device memory that outlives the process (docs/cpu-runtime.md, "Persistence"):
+// restored from the state directory at start, saved at clean shutdown, every
+// snapshot_interval_s, on SIGUSR1 and when asked. Without a state directory
+// this object does not exist and nothing touches disk.
+#pragma once
+
+#include <chrono>
+#include <string_view>
+
+#include "station/asio.hpp"
+
+#include "config/config.hpp"
+#include "devicemodel/cpu.hpp"
+#include "station/state_store.hpp"
+
+namespace slmp::station {
+
+class Persistence {
+public:
+    // Throws config::ConfigError when the directory cannot be used.
+    Persistence(boost::asio::io_context& io, devicemodel::Cpu& cpu, const config::PersistenceConfig& config);
+
+    // Loads the snapshot if there is one. A damaged or foreign snapshot stops the
+    // start (ConfigError) rather than silently starting from empty memory.
+    void restore();
+    // Saves now; logs and returns false on failure (the simulator keeps running).
+    bool save(std::string_view why);
+    void start();   // the interval timer, when an interval is configured
+    void stop();
+
+private:
+    boost::asio::awaitable<void> every_interval();
+
+    devicemodel::Cpu& cpu_;
+    StateStore store_;
+    std::chrono::milliseconds interval_;
+    bool restore_all_;
+    boost::asio::steady_timer timer_;
+    bool stopped_ = false;
+};
+
+}  // namespace slmp::station

@@ -1,0 +1,164 @@
+#include "station/scenario_hook.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "config/config.hpp"
+#include "scenarios/pcap_writer.hpp"
+
+namespace slmp::station {
+
+using protocol::Outcome;
+
+namespace {
+
+void log_event(scenarios::EventLevel level, const std::string& line) {
+    switch (level) {
+        case scenarios::EventLevel::Debug: spdlog::debug("scenario: {}", line); break;
+        case scenarios::EventLevel::Info: spdlog::info("scenario: {}", line); break;
+        case scenarios::EventLevel::Warn: spdlog::warn("scenario: {}", line); break;
+    }
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const auto& n : names) text += (text.empty() ? "'" : ", '") + n + "'";
+    return text;
+}
+
+}  // namespace
+
+ScenarioHook::~ScenarioHook() = default;
+
+void ScenarioHook::start(std::vector<scenarios::Scenario> list, devicemodel::Cpu& cpu, scenarios::Station& station) {
+    for (const auto& s : list)
+        spdlog::info("scenario '{}' ({}): {} step(s), {} trigger(s), {} rung(s), {} fault(s){}", s.name, s.source,
+                     s.timeline.steps.size(), s.triggers.size(), s.logic.rungs.size(), s.faults.size(),
+                     s.replay ? ", replaying " + s.replay->file : "");
+    attach(cpu, station);
+    runners_.add(std::move(list), cpu, log_event, &station);
+}
+
+void ScenarioHook::attach(devicemodel::Cpu& cpu, scenarios::Station& station) {
+    cpu_ = &cpu;
+    station_ = &station;
+}
+
+void ScenarioHook::load(scenarios::Scenario s) {
+    if (!cpu_) throw config::ConfigError("scenarios cannot be loaded before the server has started");
+    // The password is part of the CPU's configuration; it cannot change under connected clients.
+    if (s.initial.password)
+        throw config::ConfigError(s.source + ": /initial/password: a remote password is set only at start; "
+                                  "give this scenario with --scenario, or leave \"password\" out");
+    auto initial = s.initial;
+    auto summary = fmt::format("scenario '{}' ({}) loaded: {} step(s), {} trigger(s), {} rung(s), {} fault(s)", s.name,
+                               s.source, s.timeline.steps.size(), s.triggers.size(), s.logic.rungs.size(), s.faults.size());
+    std::vector<scenarios::Scenario> list;
+    list.push_back(std::move(s));
+    runners_.add(std::move(list), *cpu_, log_event, station_);
+    spdlog::info("{}", summary);
+    config::apply_initial_values(*cpu_, initial.devices);
+    if (initial.run_switch) cpu_->runtime().set_switch(cpu_->memory(), *initial.run_switch);
+    if (initial.error) cpu_->runtime().raise_error(cpu_->memory(), *initial.error);
+}
+
+bool ScenarioHook::stop(const std::string& name) {
+    if (!cpu_ || !runners_.remove(name, *cpu_, log_event, station_)) return false;
+    spdlog::info("scenario '{}' stopped", name);
+    return true;
+}
+
+void ScenarioHook::record(const std::string& file, const std::string& profile) {
+    if (recording_)
+        throw config::ConfigError("already recording to " + recording_file_ + "; stop that recording first");
+    recorders_.push_back(std::make_unique<scenarios::RecordingWriter>(file, profile, std::chrono::steady_clock::now()));
+    recording_ = recorders_.back().get();
+    recording_file_ = file;
+    spdlog::info("recording every request and response to {}", file);
+}
+
+bool ScenarioHook::stop_recording() {
+    if (!recording_) return false;
+    std::erase_if(recorders_, [&](const auto& r) { return r.get() == recording_; });   // closes the file
+    spdlog::info("recording to {} stopped", recording_file_);
+    recording_ = nullptr;
+    recording_file_.clear();
+    return true;
+}
+
+void ScenarioHook::record_pcap(const std::string& file, const std::string& bind) {
+    recorders_.push_back(std::make_unique<scenarios::PcapWriter>(file, bind, std::chrono::steady_clock::now(),
+                                                                 std::chrono::system_clock::now()));
+    spdlog::info("capturing every request and response to {} (pcap)", file);
+}
+
+scenarios::Plan ScenarioHook::before(scenarios::Incoming& incoming, std::span<const std::uint8_t> input,
+                                     const protocol::Session& session, const protocol::Peer& peer) {
+    if (runners_.empty()) return {};
+    incoming.peer = peer;
+    if (auto it = ordinals_.find(session.id); peer.transport == Transport::Tcp && it != ordinals_.end())
+        incoming.connection = it->second;
+    return runners_.before(incoming, input);
+}
+
+Outcome ScenarioHook::answer(scenarios::Plan& plan, const protocol::Request& request) const {
+    Outcome outcome;
+    outcome.consumed = request.size;
+    outcome.command = request.command;
+    outcome.subcommand = request.subcommand;
+    const auto faults = plan.decision.fired.empty() ? std::string("replay") : "fault " + joined(plan.decision.fired);
+    if (plan.answer) {
+        outcome.action = Outcome::Action::Respond;
+        outcome.response = std::move(*plan.answer);
+        outcome.end_code = plan.decision.end_code.value_or(protocol::EndCode::Ok);
+        if (plan.decision.end_code) outcome.note = "scenario " + faults + ": answered with an end code";
+    } else {
+        outcome.action = plan.close || plan.reset ? Outcome::Action::Close : Outcome::Action::Silent;
+        outcome.note = "scenario " + faults + (plan.reset ? ": connection reset (RST)"
+                                               : plan.close ? ": connection closed (FIN)"
+                                                            : ": not answered");
+    }
+    return outcome;
+}
+
+void ScenarioHook::after(scenarios::Plan& plan, Handled& handled, std::span<const std::uint8_t> input,
+                         const protocol::Session& session, const protocol::Peer& peer) {
+    auto& outcome = handled.outcome;
+    if (outcome.action == Outcome::Action::NeedMore) return;
+    if (plan.incoming && plan.incoming->request.complete()) {   // a scenario saw the request
+        runners_.after(plan, outcome, outcome.response);
+        handled.delivery = plan.delivery;
+        handled.reset = plan.reset;
+    }
+    if (recorders_.empty()) return;
+    const scenarios::RecordedLink at{session.id, peer.transport, peer.endpoint(), peer.local_port};
+    for (auto& r : recorders_)
+        r->exchange(std::chrono::steady_clock::now(), at, input.first(outcome.consumed),
+                    outcome.action == Outcome::Action::Respond ? &outcome.response : nullptr, plan.decision.fired);
+}
+
+void ScenarioHook::scanned(std::chrono::steady_clock::time_point now) {
+    runners_.scan(now);
+}
+
+std::vector<scenarios::FaultStats> ScenarioHook::fault_stats() const {
+    return runners_.fault_stats();
+}
+
+void ScenarioHook::log_summary() const {
+    for (const auto& f : fault_stats())
+        if (f.matched > 0) spdlog::info("scenario: fault '{}' ({}) matched {} request(s), fired {} time(s)", f.name, f.kind, f.matched, f.fired);
+}
+
+void ScenarioHook::on_opened(const Connection& c) {
+    if (c.peer.transport == Transport::Tcp) ordinals_[c.id] = ++connections_;
+    const scenarios::RecordedLink at{c.id, c.peer.transport, c.peer.endpoint(), c.peer.local_port};
+    for (auto& r : recorders_) r->opened(std::chrono::steady_clock::now(), at);
+}
+
+void ScenarioHook::on_closed(const Connection& c, std::string_view why) {
+    ordinals_.erase(c.id);
+    const scenarios::RecordedLink at{c.id, c.peer.transport, c.peer.endpoint(), c.peer.local_port};
+    for (auto& r : recorders_) r->closed(std::chrono::steady_clock::now(), at, std::string(why));
+}
+
+}  // namespace slmp::station

@@ -1,0 +1,34 @@
+// What scenarios do to the station around the CPU (scenarios::Station): a
+// power cut drops every TCP connection and closes the TCP ports (UDP requests
+// go unanswered meanwhile, decided in the scenario runner); a refusal period
+// closes the TCP ports only. A port opens again when neither holds.
+//
+// Fidelity note: a powered-off PLC does not answer a TCP SYN at all (the
+// client's connect times out); a closed port answers it with RST (connection
+// refused at once). The simulator can only do the latter without raw sockets.
+#pragma once
+
+#include "scenarios/runner.hpp"
+#include "station/activity.hpp"
+#include "station/transports.hpp"
+
+namespace slmp::station {
+
+class ScenarioStation : public scenarios::Station {
+public:
+    ScenarioStation(Activity& activity, Transports& transports) : activity_(activity), transports_(transports) {}
+
+    void power_off() override;
+    void power_on() override;
+    void refuse_connections(bool refuse) override;
+
+private:
+    void update_ports();
+
+    Activity& activity_;
+    Transports& transports_;
+    bool off_ = false;
+    bool refusing_ = false;
+};
+
+}  // namespace slmp::station

@@ -1,0 +1,101 @@
+#include "station/station.hpp"
+
+#include <chrono>
+
+#include <spdlog/spdlog.h>
+
+#include "station/log_outcome.hpp"
+#include "station/persistence.hpp"
+#include "station/scan_loop.hpp"
+#include "station/scenario_station.hpp"
+
+namespace slmp::station {
+
+using protocol::Outcome;
+
+Station::Station(config::Profile profile, protocol::EngineOptions options)
+    : cpu_(std::move(profile.cpu)), engine_(cpu_, std::move(profile.port), options) {}
+
+Station::Station(boost::asio::io_context& io, const config::ServerConfig& config)
+    : Station(config::resolve_profile(config), protocol::EngineOptions{config.max_request_bytes}) {
+    config_ = config;
+    pending_scenarios_ = load_scenarios();   // their initial state joins config_ first
+    config::apply_initial_values(cpu_, config_);
+    config::attach_hardware(cpu_, config_);
+    for (const auto& cpu : config_.cpus) {
+        auto profile = config::resolve_profile(cpu);
+        other_cpus_.push_back(std::make_unique<devicemodel::Cpu>(std::move(profile.cpu)));
+        config::apply_initial_values(*other_cpus_.back(), cpu.devices);
+        engine_.add_cpu(cpu.number, *other_cpus_.back(), std::move(profile.port));
+    }
+    start_cpu_runtime(io);
+}
+
+Station::~Station() = default;
+
+void Station::connect(Transports& transports) {
+    transports_ = &transports;
+    start_scenarios(std::move(pending_scenarios_));
+}
+
+void Station::start_cpu_runtime(boost::asio::io_context& io) {
+    cpu_.runtime().configure(config::checked_runtime_config(config_.cpu, cpu_.profile()), cpu_.memory());
+    // Device clears (Remote RUN clear modes, latch clear, reset) re-apply the
+    // configured initial values, as the CPU's "device initial value" parameter does.
+    cpu_.runtime().set_initial_values([this](devicemodel::DeviceMemory&) { config::apply_initial_values(cpu_, config_.devices); });
+    std::vector<devicemodel::Cpu*> cpus{&cpu_};
+    for (auto& other : other_cpus_) cpus.push_back(other.get());
+    scan_ = std::make_unique<ScanLoop>(io, std::move(cpus), cpu_.runtime().config().scan_time, config_.clock_speed);
+    if (!config_.persistence.state_dir.empty()) {
+        persistence_ = std::make_unique<Persistence>(io, cpu_, config_.persistence);
+        persistence_->restore();
+    }
+}
+
+void Station::start() {
+    if (scan_) scan_->start();
+    if (persistence_) persistence_->start();
+}
+
+void Station::stop() {
+    if (scan_) scan_->stop();
+    scenario_.log_summary();
+    if (persistence_) {
+        persistence_->stop();
+        persistence_->save("shutdown");
+    }
+}
+
+bool Station::save_snapshot(std::string_view why) {
+    return persistence_ && persistence_->save(why);
+}
+
+Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
+                        const protocol::Peer& peer) {
+    activity_.request_starting();
+    auto started = std::chrono::steady_clock::now();
+    // Decode once; the scenario hook sits between decode and execute.
+    scenarios::Incoming incoming{engine_.decode(input, policy)};
+    auto plan = scenario_.before(incoming, input, session, peer);
+    Handled handled;
+    handled.outcome = plan.pass() ? engine_.execute(incoming.request, session) : scenario_.answer(plan, incoming.request);
+    scenario_.after(plan, handled, input, session, peer);
+    const auto& outcome = handled.outcome;
+    if (outcome.action == Outcome::Action::NeedMore) return handled;
+    log_outcome(peer, outcome);
+    activity_.request({session.id, peer, input.first(outcome.consumed), incoming.request, outcome,
+                       std::chrono::steady_clock::now() - started});
+    return handled;
+}
+
+// Remote RESET (slmp-labels-remote-misc.md §5.6): the CPU has restarted; as on
+// the real station every TCP connection drops and UDP sessions start afresh.
+void Station::restart() {
+    spdlog::info("Remote RESET: CPU restarted; closing every connection");
+    std::vector<std::uint64_t> ids;
+    for (const auto& [id, _] : activity_.connections()) ids.push_back(id);
+    for (auto id : ids) activity_.close(id, "Remote RESET: the CPU restarted");
+    if (transports_) transports_->restart_sessions();
+}
+
+}  // namespace slmp::station

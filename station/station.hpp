@@ -1,0 +1,92 @@
+// One simulated controller: the CPU set (CPU No.1 and the other CPUs of a
+// multi-CPU rack), the protocol engine in front of it, the scenario hook and
+// recording around the engine, the scan cycle, persistence and the activity
+// reports. Every transport hands each request to handle(). Everything runs on
+// one io_context thread, so none of this needs a lock (STYLE.md §6.19).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "station/asio.hpp"
+
+#include "config/config.hpp"
+#include "devicemodel/cpu.hpp"
+#include "protocol/engine.hpp"
+#include "protocol/peer.hpp"
+#include "station/activity.hpp"
+#include "station/scenario_hook.hpp"
+#include "station/transports.hpp"
+
+namespace slmp::station {
+
+class Persistence;
+class ScanLoop;
+class ScenarioStation;
+
+class Station {
+public:
+    // A bare station: CPU No.1 and its engine, no scan cycle, no state
+    // directory, no scenarios (unit tests).
+    Station(config::Profile profile, protocol::EngineOptions options);
+    // The controller the configuration describes: its profile, the initial
+    // values (with the --scenario files' initial state), modules and networks,
+    // CPU No.2–4, the "cpu" parameters, the scan cycle and the state directory
+    // (restored now). Throws config::ConfigError naming the problem.
+    Station(boost::asio::io_context& io, const config::ServerConfig& config);
+    ~Station();
+    Station(const Station&) = delete;
+    Station& operator=(const Station&) = delete;
+
+    // Once the transports exist: recordings and scenarios start (a scenario's
+    // power cut acts on `transports`, which must outlive the station's use).
+    void connect(Transports& transports);
+    void start();   // the scan cycle and interval snapshots
+    void stop();    // at shutdown: the scan stops, faults are summed up, a last snapshot is saved
+
+    // One request frame from any transport: the scenario hook and the engine
+    // handle it, it is logged and reported to the activity observers (not when
+    // the input holds no whole frame yet: NeedMore).
+    Handled handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
+                   const protocol::Peer& peer);
+    // Called by a transport after a Remote RESET (Outcome::Action::Restart) was
+    // answered: the CPU has restarted, every connection closes.
+    void restart();
+    // A new protocol session's id (a TCP connection, a UDP port's session).
+    std::uint64_t next_session_id() { return next_session_id_++; }
+
+    // With a state directory: saves a snapshot now (false on failure).
+    bool has_state_directory() const { return persistence_ != nullptr; }
+    bool save_snapshot(std::string_view why);
+
+    devicemodel::Cpu& cpu() { return cpu_; }
+    const devicemodel::Cpu& cpu() const { return cpu_; }
+    protocol::Engine& engine() { return engine_; }
+    Activity& activity() { return activity_; }   // requests and connections, for metrics and the HTTP API
+    // Scenarios and recording: the one hook around the engine (station/scenario_hook.hpp).
+    ScenarioHook& scenario() { return scenario_; }
+    const ScenarioHook& scenario() const { return scenario_; }
+
+private:
+    void start_cpu_runtime(boost::asio::io_context& io);          // "cpu" parameters, scan cycle, state directory
+    std::vector<scenarios::Scenario> load_scenarios();            // station_scenarios.cpp
+    void start_scenarios(std::vector<scenarios::Scenario> list);
+
+    config::ServerConfig config_;   // with the scenarios' initial state joined
+    devicemodel::Cpu cpu_;
+    protocol::Engine engine_;
+    std::vector<std::unique_ptr<devicemodel::Cpu>> other_cpus_;   // CPU No.2–4 of a multi-CPU system
+    std::uint64_t next_session_id_ = 1;
+    Activity activity_;
+    ScenarioHook scenario_;
+    std::unique_ptr<ScanLoop> scan_;                     // null in a bare station
+    std::unique_ptr<Persistence> persistence_;           // null without a state directory
+    std::vector<scenarios::Scenario> pending_scenarios_;   // loaded, started by connect()
+    Transports* transports_ = nullptr;                   // connect()
+    std::unique_ptr<ScenarioStation> scenario_station_;  // null without scenarios
+};
+
+}  // namespace slmp::station

@@ -1,0 +1,39 @@
+// The station's part in scenarios and recording (docs/scenarios.md): load the
+// --scenario files before the CPU is built (their initial state is part of the
+// configuration), then start them once the ports exist, driven by the scan cycle.
+#include <spdlog/spdlog.h>
+
+#include "scenarios/initial_state.hpp"
+#include "scenarios/loader.hpp"
+#include "station/scan_loop.hpp"
+#include "station/scenario_station.hpp"
+#include "station/station.hpp"
+
+namespace slmp::station {
+
+std::vector<scenarios::Scenario> Station::load_scenarios() {
+    std::vector<scenarios::Scenario> list;
+    for (const auto& file : config_.scenarios) {
+        list.push_back(scenarios::load_scenario(file));
+        scenarios::apply_initial_state(list.back(), config_);
+    }
+    scenarios::check_together(list);
+    return list;
+}
+
+void Station::start_scenarios(std::vector<scenarios::Scenario> list) {
+    if (!config_.record_file.empty()) scenario_.record(config_.record_file, cpu_.profile().name);
+    if (!config_.record_pcap_file.empty()) scenario_.record_pcap(config_.record_pcap_file, config_.bind);
+    // With the HTTP API on, scenarios and recordings may start later (POST
+    // /api/scenarios, /api/recording), so the hook is wired up even when idle.
+    const bool later = config_.http.enabled;
+    if (!list.empty() || later) {
+        scenario_station_ = std::make_unique<ScenarioStation>(activity_, *transports_);
+        scenario_.attach(cpu_, *scenario_station_);
+        if (!list.empty()) scenario_.start(std::move(list), cpu_, *scenario_station_);
+        scan_->after_scan([this](std::chrono::steady_clock::time_point now) { scenario_.scanned(now); });
+    }
+    if (scenario_.active() || later) activity_.add_observer(&scenario_);
+}
+
+}  // namespace slmp::station
