@@ -1,17 +1,12 @@
 // Codes as the API and the metrics show them: four upper-case hex digits
-// ("0401", "C059"), as the manuals and GX Works write them.
+// ("0401", "C059"), as the manuals and GX Works write them — the protocol's one
+// hex helper.
 #pragma once
 
-#include <cstdint>
-#include <cstdio>
-#include <string>
+#include "protocol/hex.hpp"
 
 namespace slmp::control {
 
-inline std::string hex4(std::uint32_t value) {
-    char text[12];
-    std::snprintf(text, sizeof text, "%04X", value);
-    return text;
-}
+using protocol::hex4;
 
 }  // namespace slmp::control

@@ -2,15 +2,18 @@
 
 #include <spdlog/spdlog.h>
 
+#include "protocol/command_table.hpp"
+
 namespace slmp::station {
 
 namespace {
 
-// Remote password and remote operations are logged at info (warn when refused):
-// an operator wants to see who stopped or unlocked the CPU without debug logs.
-bool operator_command(std::uint16_t command) {
-    return command == 0x1001 || command == 0x1002 || command == 0x1003 || command == 0x1005 || command == 0x1006 ||
-           command == 0x1617 || command == 0x1630 || command == 0x1631;
+// Remote operations and the remote password are logged at info (warn when
+// refused): an operator wants to see who stopped or unlocked the CPU without
+// debug logs. The table says which commands those are.
+const protocol::CommandSpec* operator_row(std::uint16_t command) {
+    const auto* row = protocol::find_any_row(command);
+    return row && (row->operator_command() || row->password_exempt()) ? row : nullptr;
 }
 
 }  // namespace
@@ -18,14 +21,13 @@ bool operator_command(std::uint16_t command) {
 void log_outcome(const protocol::Peer& client, const protocol::Outcome& outcome) {
     // This runs for every request: an ordinary one is only a trace line, so the
     // peer's text is not built for it unless tracing.
-    const bool ordinary = outcome.note.empty() && !operator_command(outcome.command);
+    const auto* operation = operator_row(outcome.command);
+    const bool ordinary = outcome.note.empty() && !operation;
     if (ordinary && !spdlog::should_log(spdlog::level::trace)) return;
     const auto peer = client.text();
-    if (operator_command(outcome.command) && outcome.action != protocol::Outcome::Action::NeedMore) {
+    if (operation && outcome.action != protocol::Outcome::Action::NeedMore) {
         if (outcome.end_code == protocol::EndCode::Ok && outcome.note.empty())
-            spdlog::info("{} {:04X} ({}) done", peer, outcome.command,
-                         outcome.command == 0x1630 ? "remote password unlock" :
-                         outcome.command == 0x1631 ? "remote password lock" : "remote operation");
+            spdlog::info("{} {:04X} ({}) done", peer, outcome.command, operation->name);
         else
             spdlog::warn("{} {:04X} refused: {}", peer, outcome.command, outcome.note);
         return;

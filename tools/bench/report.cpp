@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <string>
 
+#include "protocol/hex.hpp"
+
 namespace slmp::bench {
 
 namespace {
@@ -13,11 +15,6 @@ std::string format(const char* fmt, double value) {
     return text;
 }
 
-std::string hex4(std::uint16_t code) {
-    char text[8];
-    std::snprintf(text, sizeof text, "%04X", code);
-    return text;
-}
 
 double rate(std::uint64_t count, double seconds) { return seconds > 0 ? static_cast<double>(count) / seconds : 0.0; }
 
@@ -56,7 +53,7 @@ void json_operation(std::ostream& out, const OperationResult& r, double seconds)
     out << "},\"end_codes\":{";
     bool first = true;
     for (auto [code, n] : r.recorder.end_codes) {
-        out << (first ? "" : ",") << "\"" << hex4(code) << "\":" << n;
+        out << (first ? "" : ",") << "\"" << protocol::hex4(code) << "\":" << n;
         first = false;
     }
     out << "},\"latency_us\":{\"p50\":" << format("%.1f", l.p50) << ",\"p90\":" << format("%.1f", l.p90)
@@ -82,7 +79,7 @@ void print_table(std::ostream& out, const Options& options, const Results& resul
         out << "\nerrors:";
         for (std::size_t k = 0; k < e.errors.size(); ++k)
             out << ' ' << to_string(static_cast<ErrorKind>(k)) << ' ' << e.errors[k];
-        for (auto [code, n] : e.end_codes) out << "  (end code " << hex4(code) << " x" << n << ")";
+        for (auto [code, n] : e.end_codes) out << "  (end code " << protocol::hex4(code) << " x" << n << ")";
         out << '\n';
     }
 }

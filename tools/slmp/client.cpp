@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "protocol/end_code.hpp"
+#include "protocol/hex.hpp"
 #include "tools/slmp/errors.hpp"
 
 namespace slmp::cli {
@@ -11,19 +12,11 @@ namespace slmp::cli {
 using protocol::FrameKind;
 using protocol::client::Response;
 
+using protocol::hex4;
+
 namespace {
 
-std::string hex4(unsigned value) {
-    char text[8];
-    std::snprintf(text, sizeof text, "%04X", value & 0xFFFF);
-    return text;
-}
-
-std::string hex2(unsigned value) {
-    char text[4];
-    std::snprintf(text, sizeof text, "%02X", value & 0xFF);
-    return text;
-}
+std::string hex2(unsigned value) { return protocol::hex_text(value & 0xFF, 2); }
 
 }  // namespace
 
