@@ -30,11 +30,12 @@ struct DeviceOperand {
     std::vector<std::uint8_t> bits;       // write data: one 0/1 a point (bit units)
 };
 
-// The operands of a device command, in request order. Decoding stops at the
-// first field that does not decode or limit the port enforces while reading:
-// `error` is then set and the handler answers it — before its device checks,
-// or after them when `error_after_checks` (a batch write's data: the real CPU
-// checks the device and count before it reads the data).
+// The operands of a device command, in request order: every device whose
+// fields decoded. `error` is the first problem met while reading — a field
+// that does not decode, or a limit the port enforces while it reads — and the
+// handler answers it before its device checks, or after them when
+// `error_after_checks` (a batch write's data: the device and the count are
+// checked before the data is read).
 struct Operands {
     std::vector<DeviceOperand> devices;
     EndCode error = EndCode::Ok;
