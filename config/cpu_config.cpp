@@ -90,7 +90,10 @@ void counters(const JsonAt& list, CpuRuntimeConfig& cpu) {
 // {"D": [0, 99]} or {"D": [[0, 99], [500, 599]]}; numbers or addresses ("W1F").
 void latch(const JsonAt& object, CpuRuntimeConfig& cpu) {
     object.expect_object();
-    for (const auto& [name, value] : object.json().items()) {
+    // A named local rather than a structured binding: clang < 16 cannot
+    // capture a binding in the lambdas below.
+    for (const auto& item : object.json().items()) {
+        const std::string name = item.key();
         auto at = object[name];
         auto area = devicemodel::area_by_name(name);
         if (!area) at.fail("unknown device area '" + name + "'", "use an area such as D, M, B, W, T, C, ZR");

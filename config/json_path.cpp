@@ -73,6 +73,10 @@ nlohmann::json parse_json(const std::string& text, const std::string& source) {
     } catch (const nlohmann::json::parse_error& e) {
         throw ConfigError(source + ": not valid JSON (byte " + std::to_string(e.byte) + "): " + e.what() +
                           "; fix the syntax");
+    } catch (const nlohmann::json::exception& e) {
+        // Not only syntax: a number too large for a double ("1E400") is
+        // out_of_range.406, and every mistake must reach the user as a ConfigError.
+        throw ConfigError(source + ": not valid JSON: " + e.what() + "; write numbers that fit a double");
     }
 }
 

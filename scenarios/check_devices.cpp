@@ -10,6 +10,9 @@ template <class... Ts>
 struct overloaded : Ts... {
     using Ts::operator()...;
 };
+// clang < 17 does not deduce aggregate template arguments (P1816); say it.
+template <class... Ts>
+overloaded(Ts...) -> overloaded<Ts...>;
 
 struct Checker {
     const Scenario& scenario;

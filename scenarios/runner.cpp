@@ -16,6 +16,9 @@ template <class... Ts>
 struct overloaded : Ts... {
     using Ts::operator()...;
 };
+// clang < 17 does not deduce aggregate template arguments (P1816); say it.
+template <class... Ts>
+overloaded(Ts...) -> overloaded<Ts...>;
 
 std::chrono::microseconds micros(double ms) { return std::chrono::microseconds(static_cast<std::int64_t>(ms * 1000)); }
 

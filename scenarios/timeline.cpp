@@ -13,6 +13,9 @@ template <class... Ts>
 struct overloaded : Ts... {
     using Ts::operator()...;
 };
+// clang < 17 does not deduce aggregate template arguments (P1816); say it.
+template <class... Ts>
+overloaded(Ts...) -> overloaded<Ts...>;
 
 void copy_devices(devicemodel::DeviceMemory& memory, const CopyStep& c) {
     // Read everything first: an overlapping copy moves the old values, as BMOV does.

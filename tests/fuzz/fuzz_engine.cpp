@@ -1,0 +1,142 @@
+// Bytes -> Engine::process(), as a TCP connection would feed it: one Session,
+// frame after frame, until the engine asks for more. Input layout:
+//   [0] profile (index into config::builtin_profile_names())
+//   [1] bits 0-1 data-code policy (binary/ascii/auto), bit 2 adds CPU No.2
+// Each device area but SM/SD is capped at 512 points (and the station buffer): a
+// fresh CPU with the real sizes costs ~3 ms under ASan (filling ~1 MB of
+// instrumented vectors), one with 512 points a few microseconds, and every
+// range check still has an end to hit.
+//   [2..] the byte stream
+// Checked: consumed <= input and > 0 unless NeedMore; a response parses with
+// the client decoder as one whole frame of the request's kind, codec and serial
+// carrying the outcome's end code; a rejected request leaves device memory alone.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "config/config.hpp"
+#include "devicemodel/cpu.hpp"
+#include "protocol/client.hpp"
+#include "protocol/engine.hpp"
+#include "tests/fuzz/fuzz_check.hpp"
+
+namespace {
+
+using namespace slmp;
+using protocol::Outcome;
+
+// Any write that changes a stored value is reported to the memory's observer
+// (devicemodel/device_memory.hpp), so watching is O(1) per request where a
+// full before/after compare of ~200k devices would dominate every execution.
+class Watch final : public devicemodel::WriteObserver {
+public:
+    void written(const devicemodel::DeviceSpec& spec, std::uint32_t first, std::uint32_t) override {
+        if (!changed) {
+            changed = true;
+            what = std::string(spec.symbol) + std::to_string(first);
+        }
+    }
+    bool changed = false;
+    std::string what;
+};
+
+// Profiles parse once; a fresh Cpu per input keeps every run reproducible.
+const devicemodel::CpuProfile& profile(std::size_t index) {
+    static const auto names = config::builtin_profile_names();
+    static std::map<std::size_t, devicemodel::CpuProfile> cache;
+    index %= names.size();
+    auto it = cache.find(index);
+    if (it == cache.end()) {
+        auto p = config::load_profile(names[index]);
+        // SM/SD keep their sizes: the CPU itself writes special registers there.
+        for (std::size_t a = 0; a < p.sizes.size(); ++a)
+            if (auto area = static_cast<devicemodel::Area>(a); area != devicemodel::Area::SM && area != devicemodel::Area::SD)
+                p.sizes[a] = std::min<std::uint32_t>(p.sizes[a], 512);
+        p.station_buffer_words = std::min<std::uint32_t>(p.station_buffer_words, 512);
+        it = cache.emplace(index, std::move(p)).first;
+    }
+    return it->second;
+}
+
+void watch(devicemodel::Cpu& cpu, Watch& w) {
+    cpu.memory().set_write_observer(&w);
+    cpu.station_buffer().set_write_observer(&w);
+}
+
+const char* name(Outcome::Action a) {
+    switch (a) {
+        case Outcome::Action::NeedMore: return "NeedMore";
+        case Outcome::Action::Respond: return "Respond";
+        case Outcome::Action::Silent: return "Silent";
+        case Outcome::Action::Close: return "Close";
+        case Outcome::Action::Restart: return "Restart";
+    }
+    return "?";
+}
+
+void check_response(const Outcome& out, const protocol::FrameHeader& request) {
+    bool garbage = false;
+    auto parsed = protocol::client::parse_response(out.response, &garbage);
+    FUZZ_CHECK(parsed.has_value(), "response does not parse (garbage=%d, %zu bytes) for %04X/%04X", garbage,
+               out.response.size(), out.command, out.subcommand);
+    FUZZ_CHECK(parsed->size == out.response.size(), "response frame is %zu bytes of %zu", parsed->size,
+               out.response.size());
+    FUZZ_CHECK(parsed->header.kind == request.kind && parsed->header.codec == request.codec,
+               "response kind/codec differ from the request's");
+    FUZZ_CHECK(request.kind != protocol::FrameKind::E4 || parsed->header.serial == request.serial,
+               "4E response serial %04X for request serial %04X", parsed->header.serial, request.serial);
+    FUZZ_CHECK(parsed->end_code == protocol::raw(out.end_code), "response end code %04X, outcome says %04X",
+               parsed->end_code, protocol::raw(out.end_code));
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size < 2) return 0;
+    const auto policy = static_cast<protocol::DataCodePolicy>(data[1] % 3);
+    devicemodel::Cpu cpu(profile(data[0]));
+    protocol::Engine engine(cpu);
+    std::unique_ptr<devicemodel::Cpu> second;
+    if (data[1] & 0x04) {
+        second = std::make_unique<devicemodel::Cpu>(profile(data[0]));
+        engine.add_cpu(2, *second);
+    }
+    Watch w;
+    watch(cpu, w);
+    if (second) watch(*second, w);
+
+    protocol::Session session;
+    std::span<const std::uint8_t> rest(data + 2, size - 2);
+    while (true) {
+        // The request header as the engine will see it, for comparing the response.
+        auto scan = protocol::scan_frame(rest, protocol::Direction::Request, policy, engine.options().max_frame_bytes);
+        w.changed = false;
+        auto out = engine.process(rest, policy, session);
+        FUZZ_CHECK(out.consumed <= rest.size(), "consumed %zu of %zu", out.consumed, rest.size());
+        if (out.action == Outcome::Action::NeedMore) {
+            FUZZ_CHECK(out.consumed == 0, "NeedMore consumed %zu", out.consumed);
+            break;
+        }
+        // Close may consume nothing (an oversized length field): the connection
+        // ends there, so no byte after it is ever read.
+        FUZZ_CHECK(out.consumed > 0 || out.action == Outcome::Action::Close, "%s consumed nothing", name(out.action));
+        if (out.action == Outcome::Action::Respond) {
+            FUZZ_CHECK(scan.status == protocol::FrameScan::Status::Complete, "a response to an incomplete frame");
+            FUZZ_CHECK(out.consumed == scan.size, "consumed %zu of a %zu-byte frame", out.consumed, scan.size);
+            check_response(out, scan.header);
+        }
+        const bool rejected = out.end_code != protocol::EndCode::Ok || out.action == Outcome::Action::Silent ||
+                              out.action == Outcome::Action::Close;
+        FUZZ_CHECK(!(rejected && w.changed), "%s %04X/%04X end code %04X changed %s (%s)", name(out.action),
+                   out.command, out.subcommand, protocol::raw(out.end_code), w.what.c_str(), out.note.c_str());
+        // The connection is gone after these, as it is in the server.
+        if (out.action == Outcome::Action::Close || out.action == Outcome::Action::Restart) break;
+        rest = rest.subspan(out.consumed);
+    }
+    return 0;
+}
