@@ -53,7 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     expect_config_errors_only("parse_server_config", [&] { use(config::parse_server_config(text, "fuzz.json")); });
     expect_config_errors_only("parse_profile", [&] {
         auto profile = config::parse_profile(text, "fuzz-profile.json");
-        devicemodel::Cpu cpu(profile);
+        devicemodel::Cpu cpu(profile.cpu);
     });
     return 0;
 }

@@ -46,19 +46,20 @@ public:
 };
 
 // Profiles parse once; a fresh Cpu per input keeps every run reproducible.
-const devicemodel::CpuProfile& profile(std::size_t index) {
+const config::Profile& profile(std::size_t index) {
     static const auto names = config::builtin_profile_names();
-    static std::map<std::size_t, devicemodel::CpuProfile> cache;
+    static std::map<std::size_t, config::Profile> cache;
     index %= names.size();
     auto it = cache.find(index);
     if (it == cache.end()) {
-        auto p = config::load_profile(names[index]);
+        auto loaded = config::load_profile(names[index]);
+        auto& p = loaded.cpu;
         // SM/SD keep their sizes: the CPU itself writes special registers there.
         for (std::size_t a = 0; a < p.sizes.size(); ++a)
             if (auto area = static_cast<devicemodel::Area>(a); area != devicemodel::Area::SM && area != devicemodel::Area::SD)
                 p.sizes[a] = std::min<std::uint32_t>(p.sizes[a], 512);
         p.station_buffer_words = std::min<std::uint32_t>(p.station_buffer_words, 512);
-        it = cache.emplace(index, std::move(p)).first;
+        it = cache.emplace(index, std::move(loaded)).first;
     }
     return it->second;
 }
@@ -99,12 +100,13 @@ void check_response(const Outcome& out, const protocol::FrameHeader& request) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 2) return 0;
     const auto policy = static_cast<protocol::DataCodePolicy>(data[1] % 3);
-    devicemodel::Cpu cpu(profile(data[0]));
-    protocol::Engine engine(cpu);
+    const auto& chosen = profile(data[0]);
+    devicemodel::Cpu cpu(chosen.cpu);
+    protocol::Engine engine(cpu, chosen.port);
     std::unique_ptr<devicemodel::Cpu> second;
     if (data[1] & 0x04) {
-        second = std::make_unique<devicemodel::Cpu>(profile(data[0]));
-        engine.add_cpu(2, *second);
+        second = std::make_unique<devicemodel::Cpu>(chosen.cpu);
+        engine.add_cpu(2, *second, chosen.port);
     }
     Watch w;
     watch(cpu, w);
