@@ -155,9 +155,10 @@ def engine_and_prefix_seeds():
         reqs = requests(c)
         for i, (name, cmd, sub, body) in enumerate(reqs):
             f = frame(c, e4, cmd, sub, body)
-            # Mostly R08CPU, some Q26UDEHCPU (Q-series rules); policy 2 = auto.
+            # Mostly R08CPU, some Q26UDEHCPU (Q-series rules); policy 2 = auto,
+            # writes (1xxx) with the snapshot compare (bit 3).
             profile = q26 if i % 4 == 3 else r08
-            write("fuzz_engine", f"{shape}_{name}", bytes([profile, 2]) + f)
+            write("fuzz_engine", f"{shape}_{name}", bytes([profile, 0x0A if cmd >> 12 == 1 else 2]) + f)
             # The prefix target: bit 0 request, policy auto (bits 1-2 = 2).
             write("fuzz_frame_prefix", f"{shape}_{name}", bytes([0x04]) + f)
         # Several frames on one connection: write, read back, monitor.
@@ -173,10 +174,11 @@ def engine_and_prefix_seeds():
                 c.num(0, 1) + c.num(0xFF, 1) + c.num(0x03FF, 2) + c.num(0, 1))
         payload = c.num(0, 2) + c.num(0x1234, 2)
         write("fuzz_frame_prefix", f"{shape}_response", bytes([0x05]) + resp + c.num(len(payload), 2) + payload)
-    # Every profile once, with a binary read and an ASCII one on a policy each.
+    # Every profile once, with a binary read and an ASCII one on a policy each
+    # (bit 3: with the full memory snapshot compare).
     for i, p in enumerate(profiles):
-        write("fuzz_engine", f"profile_{p}_bin", bytes([i, 0]) + frame(Codec(False), False, 0x0401, 0, Codec(False).device("D", 0) + Codec(False).num(2, 2)))
-        write("fuzz_engine", f"profile_{p}_ascii", bytes([i, 1]) + frame(Codec(True), False, 0x0101, 0, b""))
+        write("fuzz_engine", f"profile_{p}_bin", bytes([i, 0x08]) + frame(Codec(False), False, 0x0401, 0, Codec(False).device("D", 0) + Codec(False).num(2, 2)))
+        write("fuzz_engine", f"profile_{p}_ascii", bytes([i, 0x09]) + frame(Codec(True), False, 0x0101, 0, b""))
 
 
 def field_seeds():
