@@ -14,7 +14,7 @@
 
 namespace slmp::station {
 
-class ScenarioStation : public scenarios::Station {
+class ScenarioStation final : public scenarios::Station {
 public:
     ScenarioStation(Activity& activity, Transports& transports) : activity_(activity), transports_(transports) {}
 

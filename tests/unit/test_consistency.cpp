@@ -91,7 +91,7 @@ std::vector<std::pair<Form, bool>> forms_of(const Kind& k) {
 class Check {
 public:
     Check(Cpu& cpu, const Kind& kind, std::uint32_t seed)
-        : cpu_(cpu), engine_(cpu, port_of(cpu)), conn_{engine_}, kind_(kind), rng_(seed) {}
+        : engine_(cpu, port_of(cpu)), conn_{engine_}, kind_(kind), rng_(seed) {}
 
     // One round: new place and values, written by `writer` (or straight into
     // memory), then read back by every reader in every form and both codes.
@@ -292,7 +292,6 @@ private:
         }
     }
 
-    Cpu& cpu_;
     protocol::Engine engine_;
     Connection conn_;
     Kind kind_;
