@@ -24,13 +24,13 @@ bool builtin(const std::string& name) { return name.find('/') == std::string::np
 
 void use(const config::ServerConfig& c) {
     if (!builtin(c.profile)) return;
-    devicemodel::Cpu cpu(config::resolve_profile(c));
+    devicemodel::Cpu cpu(config::resolve_profile(c).cpu);
     config::apply_initial_values(cpu, c);
     config::attach_hardware(cpu, c);
     cpu.runtime().configure(config::checked_runtime_config(c.cpu, cpu.profile()), cpu.memory());
     for (const auto& other : c.cpus) {
         if (!builtin(other.profile)) continue;
-        devicemodel::Cpu more(config::resolve_profile(other));
+        devicemodel::Cpu more(config::resolve_profile(other).cpu);
         config::apply_initial_values(more, other.devices);
     }
 }
