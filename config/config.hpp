@@ -53,6 +53,10 @@ struct PortConfig {
     DataCode data_code = DataCode::Auto;
     unsigned max_connections = 64;         // TCP: 1 reproduces an iQ-R built-in port
     unsigned idle_timeout_ms = 300000;     // TCP: close a silent connection; 0 = never
+    // TCP: close a connection whose started frame is not whole this long after
+    // its first byte, so half-frames cannot hold a connection slot; 0 = never.
+    unsigned partial_frame_timeout_ms = 5000;
+    unsigned max_connections_per_address = 0;   // TCP: clients from one IP address at once; 0 = no limit
 };
 
 struct InitialValue {

@@ -14,7 +14,8 @@ using devicemodel::Unit;
 namespace {
 
 PortConfig port(const JsonAt& at) {
-    at.only_keys({"transport", "port", "data_code", "max_connections", "idle_timeout_ms"});
+    at.only_keys({"transport", "port", "data_code", "max_connections", "idle_timeout_ms",
+                "partial_frame_timeout_ms", "max_connections_per_address"});
     PortConfig p;
     auto transport = at["transport"].string();
     if (transport == "tcp") p.transport = Transport::Tcp;
@@ -27,6 +28,10 @@ PortConfig port(const JsonAt& at) {
         if (p.max_connections == 0) at["max_connections"].fail("must be at least 1", "use 1 to reproduce an iQ-R built-in port");
     }
     if (at.has("idle_timeout_ms")) p.idle_timeout_ms = static_cast<unsigned>(at["idle_timeout_ms"].unsigned_int(86400000));
+    if (at.has("partial_frame_timeout_ms"))
+        p.partial_frame_timeout_ms = static_cast<unsigned>(at["partial_frame_timeout_ms"].unsigned_int(86400000));
+    if (at.has("max_connections_per_address"))
+        p.max_connections_per_address = static_cast<unsigned>(at["max_connections_per_address"].unsigned_int(4096));
     return p;
 }
 

@@ -44,6 +44,8 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("data-code", po::value<std::string>(), "binary, ascii or auto (detect per message; default)")
         ("max-connections", po::value<unsigned>(), "TCP clients served at once per port (default 64; 1 = iQ-R built-in port)")
         ("idle-timeout", po::value<double>(), "close a TCP connection silent for this many seconds (default 300; 0 = never)")
+        ("partial-frame-timeout", po::value<double>(), "close a TCP connection whose started frame is not whole after this many seconds (default 5; 0 = never)")
+        ("max-connections-per-address", po::value<unsigned>(), "TCP clients served at once per port from one IP address (default 0 = no limit)")
         ("max-request-bytes", po::value<std::size_t>(), "largest request frame accepted (default 8192)")
         ("log-level,l", po::value<std::string>(), "trace, debug, info, warn, error or off (default info)")
         ("ready-file", po::value<std::string>(), "write {\"tcp\":[...],\"udp\":[...],\"http\":N,\"pid\":N} here once listening")
@@ -102,6 +104,15 @@ CommandLine parse_command_line(int argc, char** argv) {
         auto seconds = vm["idle-timeout"].as<double>();
         if (seconds < 0 || seconds > 86400) throw ConfigError("--idle-timeout: use 0 (never) to 86400 seconds");
         for (auto& p : c.ports) p.idle_timeout_ms = static_cast<unsigned>(seconds * 1000);
+    }
+    if (vm.count("partial-frame-timeout")) {
+        auto seconds = vm["partial-frame-timeout"].as<double>();
+        if (seconds < 0 || seconds > 86400) throw ConfigError("--partial-frame-timeout: use 0 (never) to 86400 seconds");
+        for (auto& p : c.ports) p.partial_frame_timeout_ms = static_cast<unsigned>(seconds * 1000);
+    }
+    if (vm.count("max-connections-per-address")) {
+        auto n = vm["max-connections-per-address"].as<unsigned>();
+        for (auto& p : c.ports) p.max_connections_per_address = n;
     }
     if (vm.count("max-request-bytes")) {
         c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();

@@ -35,9 +35,11 @@ asio::awaitable<void> TcpListener::accept_loop() {
             spdlog::warn("TCP port {}: accept failed: {}", port(), ec.message());
             continue;
         }
+        if (over_address_cap(socket)) continue;   // the socket closes as it goes out of scope
         auto session = std::make_shared<TcpSession>(std::move(socket), station_, config_,
                                                     [this](TcpSession* s) { session_closed(s); });
         sessions_.emplace(session.get(), session);
+        if (config_.max_connections_per_address > 0) ++sessions_per_address_[session->peer().address];
         session->start();
         if (sessions_.size() >= config_.max_connections) {
             spdlog::info("TCP port {}: {} of {} connection(s) in use; refusing new clients until one leaves", port(),
@@ -48,7 +50,24 @@ asio::awaitable<void> TcpListener::accept_loop() {
     }
 }
 
+bool TcpListener::over_address_cap(const tcp::socket& socket) const {
+    if (config_.max_connections_per_address == 0) return false;
+    boost::system::error_code ec;
+    auto remote = socket.remote_endpoint(ec);
+    if (ec) return false;   // the client already left; its session will notice
+    auto address = remote.address().to_string();
+    auto found = sessions_per_address_.find(address);
+    if (found == sessions_per_address_.end() || found->second < config_.max_connections_per_address) return false;
+    spdlog::warn("TCP port {}: {} already has {} connection(s), the per-address limit; closing its new connection",
+                 port(), address, found->second);
+    return true;
+}
+
 void TcpListener::session_closed(TcpSession* session) {
+    if (config_.max_connections_per_address > 0) {
+        auto found = sessions_per_address_.find(session->peer().address);
+        if (found != sessions_per_address_.end() && --found->second == 0) sessions_per_address_.erase(found);
+    }
     sessions_.erase(session);
     if (stopping_ || refusing_ || acceptor_.is_open()) return;
     reopen();

@@ -1,10 +1,13 @@
 // A TCP port. When it serves max_connections clients it closes its listening
 // socket, so further clients are refused as by a real iQ-R built-in port
-// (hardware-behaviour.md §4); it listens again when a client leaves.
+// (hardware-behaviour.md §4); it listens again when a client leaves. With a
+// per-address cap, a client address already at its cap has a new connection
+// accepted and closed at once (a simulator's guard; real ports have none).
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <unordered_map>
 
 #include "station/asio.hpp"
@@ -31,6 +34,7 @@ private:
     void reopen();   // listen() again after the port was closed; logs instead of throwing
     boost::asio::awaitable<void> accept_loop();
     void session_closed(TcpSession* session);
+    bool over_address_cap(const boost::asio::ip::tcp::socket& socket) const;
 
     boost::asio::io_context& io_;
     station::Station& station_;
@@ -38,6 +42,7 @@ private:
     boost::asio::ip::tcp::endpoint endpoint_;
     boost::asio::ip::tcp::acceptor acceptor_;
     std::unordered_map<TcpSession*, std::shared_ptr<TcpSession>> sessions_;
+    std::unordered_map<std::string, unsigned> sessions_per_address_;   // only with a per-address cap
     bool stopping_ = false;
     bool refusing_ = false;
 };

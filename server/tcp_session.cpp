@@ -27,7 +27,8 @@ TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Station& station, 
       station_(station),
       policy_(to_policy(port.data_code)),
       idle_timeout_(port.idle_timeout_ms),
-      idle_timer_(socket_.get_executor()),
+      partial_frame_timeout_(port.partial_frame_timeout_ms),
+      deadline_timer_(socket_.get_executor()),
       on_closed_(std::move(on_closed)) {
     session_.id = station_.next_session_id();
     boost::system::error_code ec;
@@ -52,14 +53,15 @@ void TcpSession::start() {
                                 }});
     auto log_crash = station::log_exception(peer_.text() + " session failed", [self] { self->finish("internal error"); });
     asio::co_spawn(socket_.get_executor(), serve(), log_crash);
-    if (idle_timeout_.count() > 0) asio::co_spawn(socket_.get_executor(), watch_idle(), log_crash);
+    if (idle_timeout_.count() > 0 || partial_frame_timeout_.count() > 0)
+        asio::co_spawn(socket_.get_executor(), watch_deadlines(), log_crash);
 }
 
 void TcpSession::close() {
     boost::system::error_code ec;
     socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
     socket_.close(ec);
-    idle_timer_.cancel();
+    deadline_timer_.cancel();
 }
 
 void TcpSession::close(const std::string& why) {
@@ -118,6 +120,7 @@ awaitable<void> TcpSession::serve() {
             }
         }
         pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(offset));
+        note_pending(pending.size(), offset > 0);
         co_await outbox.send(ec);
         if (ec) {
             close_reason_ = "write failed: " + ec.message();
@@ -133,18 +136,46 @@ awaitable<void> TcpSession::serve() {
     finish(close_reason_);
 }
 
-awaitable<void> TcpSession::watch_idle() {
+void TcpSession::note_pending(std::size_t pending_bytes, bool consumed_a_frame) {
+    pending_bytes_ = pending_bytes;
+    if (pending_bytes == 0) {
+        partial_since_.reset();
+        return;
+    }
+    // The frame now incomplete began in this read when none was pending before or
+    // when the one that was pending has just completed; a frame that keeps
+    // trickling in keeps its first byte's time, so dribbling cannot extend it.
+    if (partial_since_ && !consumed_a_frame) return;
+    partial_since_ = std::chrono::steady_clock::now();
+    if (partial_frame_timeout_.count() > 0) deadline_timer_.cancel();   // the watchdog recomputes its deadline
+}
+
+awaitable<void> TcpSession::watch_deadlines() {
     auto self = shared_from_this();
+    using clock = std::chrono::steady_clock;
     while (!closed_) {
-        auto deadline = last_activity_ + idle_timeout_;
-        if (std::chrono::steady_clock::now() >= deadline) {
-            close_reason_ = "idle for " + std::to_string(idle_timeout_.count()) + " ms (idle timeout)";
+        auto deadline = clock::time_point::max();
+        bool partial = false;
+        if (idle_timeout_.count() > 0) deadline = last_activity_ + idle_timeout_;
+        if (partial_frame_timeout_.count() > 0 && partial_since_ && *partial_since_ + partial_frame_timeout_ < deadline) {
+            deadline = *partial_since_ + partial_frame_timeout_;
+            partial = true;
+        }
+        if (clock::now() >= deadline) {
+            if (partial) {
+                close_reason_ = "a started frame was not whole " + std::to_string(partial_frame_timeout_.count()) +
+                                " ms after its first byte (partial-frame timeout; " + std::to_string(pending_bytes_) +
+                                " byte(s) pending)";
+                spdlog::warn("{} connection {}: {}", peer_.text(), session_.id, close_reason_);
+            } else {
+                close_reason_ = "idle for " + std::to_string(idle_timeout_.count()) + " ms (idle timeout)";
+            }
             close();   // serve() sees the error and finishes
             co_return;
         }
-        idle_timer_.expires_at(deadline);
+        deadline_timer_.expires_at(deadline);
         boost::system::error_code ec;
-        co_await idle_timer_.async_wait(asio::redirect_error(use_awaitable, ec));
+        co_await deadline_timer_.async_wait(asio::redirect_error(use_awaitable, ec));
     }
 }
 

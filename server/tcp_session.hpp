@@ -1,12 +1,14 @@
 // One TCP connection: frames are cut from the stream by their length field, so
 // a request split over many segments is assembled and several requests in one
-// segment are all answered, in order. An idle watchdog closes silent
-// connections.
+// segment are all answered, in order. A watchdog closes silent connections
+// (idle timeout) and connections whose started frame stays incomplete
+// (partial-frame timeout), so a half-sent header cannot hold a slot for long.
 #pragma once
 
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "station/asio.hpp"
@@ -29,15 +31,20 @@ public:
 
 private:
     boost::asio::awaitable<void> serve();
-    boost::asio::awaitable<void> watch_idle();
+    boost::asio::awaitable<void> watch_deadlines();
+    void note_pending(std::size_t pending_bytes, bool consumed_a_frame);
     void finish(const std::string& why);
 
     boost::asio::ip::tcp::socket socket_;
     station::Station& station_;
     protocol::DataCodePolicy policy_;
     std::chrono::milliseconds idle_timeout_;
+    std::chrono::milliseconds partial_frame_timeout_;
     std::chrono::steady_clock::time_point last_activity_;
-    boost::asio::steady_timer idle_timer_;
+    // When the first byte of the frame still incomplete in the buffer arrived; unset when none is.
+    std::optional<std::chrono::steady_clock::time_point> partial_since_;
+    std::size_t pending_bytes_ = 0;
+    boost::asio::steady_timer deadline_timer_;
     protocol::Session session_;
     protocol::Peer peer_;   // the client, and the simulator's port it reached
     std::string close_reason_ = "closed by the client";

@@ -7,6 +7,7 @@
 #include <signal.h>
 
 #include <chrono>
+#include <random>
 #include <thread>
 
 #include "frames.hpp"
@@ -177,50 +178,59 @@ TEST_CASE("persistence: write, stop, start, read back", "[cpu][persistence]") {
 }
 
 TEST_CASE("persistence: kill -9 during writes leaves a whole snapshot", "[cpu][persistence][crash]") {
+    // 20 kills at varied moments during about 10^4 acknowledged writes, snapshots every 5 ms.
+    // Each write sets D0-D99 to one new value in one request, so a whole snapshot holds 100
+    // equal words; a torn one would not. The value restored is one that existed: never above
+    // the last write sent, and at least the first write of the previous round that a later
+    // snapshot saw. The last write of a round is sent but not waited for, so the kill can
+    // land while a request is in the server.
     TempDir state;
     SimOptions options;
     options.args = {"--state-dir", state.path().string()};
     options.config_json = R"({"restore": "all", "snapshot_interval_s": 0.005})";
-    std::uint16_t last_written = 0;
+    std::mt19937 random(16);   // fixed seed: the same kill moments every run
+    std::uint16_t last_sent = 0;
     std::uint16_t first_of_previous_round = 1;
-    for (int round = 0; round < 3; ++round) {
+    int acknowledged = 0;
+    for (int round = 0; round < 20; ++round) {
         INFO("round " << round);
         SimProcess sim(options);
         TcpLink link(sim.tcp_port());
-        // What the previous round left: 100 equal words (each write is one request,
-        // applied whole between snapshots), never newer than what was written.
         auto frame = link.exchange(read_words(kBin, "D0", 100));
         auto response = client::parse_response(frame);
         REQUIRE(response);
         auto reader = response->reader();
         auto restored = reader.words(100, "D0-D99");
         for (auto v : restored) REQUIRE(v == restored[0]);
-        CHECK(restored[0] <= last_written);
+        CHECK(restored[0] <= last_sent);
         if (round > 0) CHECK(restored[0] >= first_of_previous_round);
-        // Write while interval snapshots are taken, then kill the process mid-stream.
-        // Values only grow across rounds, so a restored value is never above the last one written.
-        // Count only writes made after a snapshot that was taken after this round's first
-        // write, so the next round always has something of this round to find (a loaded
-        // machine may not snapshot again for a while).
+        // Values only grow across rounds. Count only writes made after a snapshot that was
+        // taken after this round's first write, so the next round always has something of
+        // this round to find (a loaded machine may not snapshot again for a while).
         const auto snapshot = state.path() / "snapshot.bin";
         auto snapshot_time = [&] {
             std::error_code ec;
             return std::filesystem::last_write_time(snapshot, ec);
         };
         auto write_next = [&] {
-            ++last_written;
-            REQUIRE(ask(link, write_words(kBin, "D0", std::vector<std::uint16_t>(100, last_written))) == show(ok(kBin)));
+            ++last_sent;
+            REQUIRE(ask(link, write_words(kBin, "D0", std::vector<std::uint16_t>(100, last_sent))) == show(ok(kBin)));
+            ++acknowledged;
         };
         write_next();
-        first_of_previous_round = last_written;
+        first_of_previous_round = last_sent;
         const auto after_first_write = snapshot_time();
-        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        const int writes = std::uniform_int_distribution<int>(250, 750)(random);
+        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
         int after_first_snapshot = 0;
-        while (after_first_snapshot < 200 && std::chrono::steady_clock::now() < deadline) {
+        while ((after_first_snapshot < writes || after_first_snapshot == 0) && std::chrono::steady_clock::now() < deadline) {
             write_next();
             if (snapshot_time() != after_first_write) ++after_first_snapshot;
         }
         REQUIRE(after_first_snapshot > 0);
+        ++last_sent;
+        link.client().send(write_words(kBin, "D0", std::vector<std::uint16_t>(100, last_sent)));   // in flight at the kill
         sim.stop(SIGKILL);
     }
+    CHECK(acknowledged >= 10000);
 }

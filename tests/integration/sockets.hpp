@@ -80,12 +80,23 @@ protected:
 
 class TcpClient : public Socket {
 public:
-    // Connects to 127.0.0.1:port. Returns nullopt and sets `error` (errno) on failure.
-    static std::optional<TcpClient> connect(std::uint16_t port, int* error = nullptr) {
+    // Connects to 127.0.0.1:port, from `source` when given (any 127.x.y.z: on
+    // Linux all of 127/8 is loopback, so tests can be several client addresses).
+    // Returns nullopt and sets `error` (errno) on failure.
+    static std::optional<TcpClient> connect(std::uint16_t port, int* error = nullptr, const char* source = nullptr) {
         int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
         if (fd < 0) throw std::runtime_error("socket() failed");
         int one = 1;
         ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+        if (source) {
+            sockaddr_in from{};
+            from.sin_family = AF_INET;
+            if (::inet_pton(AF_INET, source, &from.sin_addr) != 1 ||
+                ::bind(fd, reinterpret_cast<sockaddr*>(&from), sizeof from) != 0) {
+                ::close(fd);
+                throw std::runtime_error(std::string("cannot bind the client to ") + source);
+            }
+        }
         auto addr = loopback(port);
         if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
             if (error) *error = errno;
