@@ -56,11 +56,17 @@ public:
 
     void set_write_observer(WriteObserver* observer) { observer_ = observer; }
 
+    // Whether every area but `ignored` holds what `other`'s does, compared in the
+    // storage itself (not through the observer): a copy taken before a request
+    // and this after it show whether the request changed anything.
+    bool same_contents(const DeviceMemory& other, std::span<const Area> ignored = {}) const;
+
 private:
     struct Store {
         std::vector<std::uint8_t> bits;      // plain bit areas; contacts of T/C areas
         std::vector<std::uint8_t> coils;     // T/C areas only
         std::vector<std::uint32_t> values;   // word areas (low 16 bits), LZ, T/C current values
+        bool operator==(const Store&) const = default;
     };
     Store& store(Area area);
     const Store& store(Area area) const;

@@ -182,3 +182,20 @@ TEST_CASE("device memory bounds", "[device_memory]") {
         CHECK(read(m, "M", 0, 4) == std::vector<std::uint16_t>(4, 0));
     }
 }
+
+TEST_CASE("same_contents: a copy before a write and the memory after it", "[device_memory]") {
+    DeviceMemory m(small_sizes(), 16);
+    const DeviceMemory before = m;
+    CHECK(m.same_contents(before));
+    m.set_value(dev("D"), 5, 7);
+    CHECK_FALSE(m.same_contents(before));
+    const Area d[] = {Area::D};
+    CHECK(m.same_contents(before, d));   // D is left out of the compare
+    m.set_value(dev("D"), 5, 0);
+    m.set_bit(dev("TS"), 3, true);   // a timer contact: the bit plane of a T/C area
+    CHECK_FALSE(m.same_contents(before));
+    m.set_bit(dev("TS"), 3, false);
+    m.set_value(dev("R"), 1, 9);     // R lives in ZR's storage
+    CHECK_FALSE(m.same_contents(before));
+    CHECK_FALSE(m.same_contents(DeviceMemory(DeviceSizes{}, 16)));   // other sizes
+}
