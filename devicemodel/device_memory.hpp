@@ -56,11 +56,17 @@ public:
 
     void set_write_observer(WriteObserver* observer) { observer_ = observer; }
 
+    // Same sizes and every stored value the same; the observer is not compared.
+    // A copy and this make a cheap before/after snapshot (fuzz_http checks that
+    // a refused request wrote nothing).
+    bool operator==(const DeviceMemory& other) const { return sizes_ == other.sizes_ && stores_ == other.stores_; }
+
 private:
     struct Store {
         std::vector<std::uint8_t> bits;      // plain bit areas; contacts of T/C areas
         std::vector<std::uint8_t> coils;     // T/C areas only
         std::vector<std::uint32_t> values;   // word areas (low 16 bits), LZ, T/C current values
+        bool operator==(const Store&) const = default;
     };
     Store& store(Area area);
     const Store& store(Area area) const;

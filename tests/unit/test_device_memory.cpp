@@ -182,3 +182,32 @@ TEST_CASE("device memory bounds", "[device_memory]") {
         CHECK(read(m, "M", 0, 4) == std::vector<std::uint16_t>(4, 0));
     }
 }
+
+TEST_CASE("a copy compares equal until a value differs", "[device_memory]") {
+    // fuzz_http's snapshot: a copy before a request, == after it.
+    DeviceMemory m(small_sizes(), 16);
+    const DeviceMemory before = m;
+    CHECK(m == before);
+    SECTION("any store counts: words, bits, coils, the slack behind ZR") {
+        for (const char* symbol : {"D", "M", "TC", "LZ"}) {
+            INFO(symbol);
+            m.set_value(dev(symbol), 1, 1);
+            CHECK_FALSE(m == before);
+            m.set_value(dev(symbol), 1, 0);
+            CHECK(m == before);
+        }
+        m.set_value(dev("ZR"), 130, 1);   // slack
+        CHECK_FALSE(m == before);
+    }
+    SECTION("sizes count, the observer does not") {
+        auto larger = small_sizes();
+        larger[static_cast<std::size_t>(Area::D)] = 65;
+        CHECK_FALSE(m == DeviceMemory(larger, 16));
+        struct : WriteObserver {
+            void written(const DeviceSpec&, std::uint32_t, std::uint32_t) override {}
+        } observer;
+        m.set_write_observer(&observer);
+        CHECK(m == before);
+        m.set_write_observer(nullptr);
+    }
+}
