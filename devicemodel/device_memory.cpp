@@ -40,14 +40,6 @@ const DeviceMemory::Store& DeviceMemory::store(Area area) const {
     return stores_[static_cast<std::size_t>(storage_area(area))];
 }
 
-bool DeviceMemory::same_contents(const DeviceMemory& other, std::span<const Area> ignored) const {
-    if (sizes_ != other.sizes_) return false;
-    for (std::size_t i = 0; i < stores_.size(); ++i)
-        if (std::find(ignored.begin(), ignored.end(), static_cast<Area>(i)) == ignored.end() && stores_[i] != other.stores_[i])
-            return false;
-    return true;
-}
-
 bool DeviceMemory::contains(Area area, std::uint64_t start, std::uint64_t count) const {
     return start + count <= size(area);
 }

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # scripts/fuzz.sh TARGET SECONDS — runs one libFuzzer target (tests/fuzz/) for
-# SECONDS on a copy of its committed corpus with the SLMP dictionary. Builds
+# SECONDS on a copy of its committed corpus with its dictionary
+# (tests/fuzz/TARGET.dict if there is one, else tests/fuzz/slmp.dict). Builds
 # build-asan (clang, ASan + UBSan, SLMP_FUZZ=ON) first if needed. Prints the
 # executions and whether anything was found; on a crash exits non-zero and
 # prints the sanitizer report, the reproducer's path and a hexdump of it.
-# Targets: fuzz_engine fuzz_fields fuzz_frame_prefix fuzz_config fuzz_scenario
+# Targets: fuzz_engine fuzz_fields fuzz_frame_prefix fuzz_config fuzz_scenario fuzz_http
 # Re-run a reproducer: build-asan/tests/fuzz/TARGET path/to/crash-...
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,10 +31,12 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/slmp-fuzz-$target.XXXXXX")
 cp -r "tests/fuzz/corpus/$target" "$work/corpus"
 mkdir "$work/artifacts"
 log="$work/fuzz.log"
+dict=tests/fuzz/slmp.dict
+[ -f "tests/fuzz/$target.dict" ] && dict="tests/fuzz/$target.dict"
 
 # -timeout: an input that takes 10 s is a hang worth reporting (the default is 20 min).
 set +e
-"build-asan/tests/fuzz/$target" "$work/corpus" -dict=tests/fuzz/slmp.dict -max_total_time="$seconds" \
+"build-asan/tests/fuzz/$target" "$work/corpus" -dict="$dict" -max_total_time="$seconds" \
   -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/artifacts/" >"$log" 2>&1
 rc=$?
 set -e

@@ -216,11 +216,109 @@ def json_seeds():
           b'"password": "1234", "password_lockout": {"attempts": 3, "seconds": 10}}}')
 
 
+# fuzz_http: requests joined by NUL, each a method digit, the target, and
+# after a newline the body (tests/fuzz/fuzz_http.cpp).
+METHODS = {"GET": b"0", "PUT": b"1", "POST": b"2", "DELETE": b"3", "PATCH": b"4"}
+
+
+def http(*requests):
+    """(method, target[, body]) each; a body that is not a str is sent as JSON."""
+    out = []
+    for method, target, *body in requests:
+        text = METHODS[method] + target.encode()
+        if body:
+            text += b"\n" + (body[0] if isinstance(body[0], str) else json.dumps(body[0])).encode()
+        out.append(text)
+    return b"\0".join(out)
+
+
+def http_seeds():
+    """Every route of docs/api.md with a body it takes, and mistakes of each kind.
+    The station's areas hold 512 points (D0-D511; fuzz_http.cpp)."""
+    fault = {"name": "refuse-d100", "faults": [{"id": "no-d100", "do": "end_code", "end_code": "C051",
+                                                 "match": {"devices": "D100-D199"}}]}
+    seeds = {
+        "info": [("GET", "/api/info")],
+        "devices_read": [("GET", "/api/devices/D100?count=3"), ("GET", "/api/devices/M0?count=8"),
+                         ("GET", "/api/devices/M0?as=words"), ("GET", "/api/devices/LTN0?count=2"),
+                         ("GET", "/api/devices/X1F?as=dwords&count=2")],
+        "devices_write": [("PUT", "/api/devices/D100", {"values": [1, -1, 4660]}), ("GET", "/api/devices/D100?count=3")],
+        "devices_write_bits": [("PUT", "/api/devices/X1F", {"values": [True, 0, 1]}),
+                               ("PUT", "/api/devices/M0?as=words", {"values": [65535]})],
+        "devices_write_dwords": [("PUT", "/api/devices/D200?as=dwords", {"values": [305419896, -1]}),
+                                 ("PUT", "/api/devices/LTN0", {"values": [70000]}),
+                                 ("PUT", "/api/devices/SD203", {"values": [2]})],
+        "devices_string": [("PUT", "/api/devices/D300", {"string": "HELLO"}),
+                           ("GET", "/api/devices/D300?as=string&count=10"),
+                           ("PUT", "/api/devices/D310?as=string", '{"string": "\\u00e9\\u0000A"}')],
+        "devices_refused": [("PUT", "/api/devices/D510", {"values": [1, 2, 3]}),
+                            ("PUT", "/api/devices/D0", {"values": [1, 70000]}),
+                            ("PUT", "/api/devices/D0", {"values": [1], "string": "x"}),
+                            ("PUT", "/api/devices/D0?as=bits", {"values": [1]}),
+                            ("PUT", "/api/devices/M0", {"string": "x"}),
+                            ("PUT", "/api/devices/D0", {"string": "\u3042"}),
+                            ("PUT", "/api/devices/D0", '{"values": [1,'),
+                            ("PUT", "/api/devices/D0", {"values": [1.5]}),
+                            ("PUT", "/api/devices/D0", {"value": 5})],
+        "devices_errors": [("GET", "/api/devices/D511?count=2"), ("GET", "/api/devices/Q100"),
+                           ("GET", "/api/devices/D0?cnt=2"), ("GET", "/api/devices/D0?count=0"),
+                           ("GET", "/api/devices/D0?count=65537"), ("GET", "/api/devices/D0?count=x"),
+                           ("GET", "/api/devices/D0?as=bytes"), ("GET", "/api/devices/G0"),
+                           ("GET", "/api/devices/D0?count=%zz")],
+        "buffer": [("GET", "/api/buffer"), ("PUT", "/api/buffer/U3/G100", {"values": [4660, 65535]}),
+                   ("GET", "/api/buffer/U3/G100?count=2&as=dwords"), ("GET", "/api/buffer/U3E0/HG0?count=2"),
+                   ("PUT", "/api/buffer/U3E1/G0?as=string", {"string": "AB"}),
+                   ("PUT", "/api/buffer/station/G10", {"values": [7]}), ("GET", "/api/buffer/u03/G100")],
+        "buffer_errors": [("GET", "/api/buffer/U5/G0"), ("GET", "/api/buffer/U3/HG0"),
+                          ("GET", "/api/buffer/U3/G511?count=2"), ("GET", "/api/buffer/U3/D0"),
+                          ("GET", "/api/buffer/U3/G0?as=bits"), ("PUT", "/api/buffer/U3/G511", {"values": [1, 2]})],
+        "scenario_faults": [("POST", "/api/scenarios", fault), ("GET", "/api/scenarios"), ("GET", "/api/faults"),
+                            ("PUT", "/api/faults/no-d100", {"enabled": False}),
+                            ("PUT", "/api/faults/nope", {"enabled": False}),
+                            ("PUT", "/api/faults/no-d100", {"enabled": "no"}),
+                            ("POST", "/api/scenarios", fault),
+                            ("DELETE", "/api/scenarios/refuse-d100"), ("DELETE", "/api/scenarios/refuse-d100")],
+        # A fault without an id is named "<source>#<pointer>", percent-encoded in the path.
+        "scenario_unnamed_fault": [("POST", "/api/scenarios", {"name": "x", "faults": [
+                                       {"do": "end_code", "end_code": "C051", "match": {"command": "0401"}}]}),
+                                   ("PUT", "/api/faults/request%20body%20(x)%23%2Ffaults%2F0", {"enabled": False}),
+                                   ("DELETE", "/api/scenarios/x")],
+        "scenario_errors": [("POST", "/api/scenarios", {"faults": []}), ("POST", "/api/scenarios", "[]"),
+                            ("POST", "/api/scenarios", {"name": "d", "initial": {"devices": {"D600": 1}}}),
+                            ("POST", "/api/scenarios", {"name": "p", "initial": {"password": "1234"}}),
+                            ("DELETE", "/api/scenarios/none")],
+        "state": [("GET", "/api/state"), ("PUT", "/api/state", {"switch": "STOP"}), ("GET", "/api/state"),
+                  ("PUT", "/api/state", {"switch": "PAUSE"}), ("PUT", "/api/state", {"switch": "RUN", "x": 1}),
+                  ("PUT", "/api/state", "[]"), ("PUT", "/api/state", {"switch": "RUN"})],
+        "recording": [("GET", "/api/recording"), ("DELETE", "/api/recording"), ("POST", "/api/recording", {}),
+                      ("POST", "/api/recording", {"path": "x.jsonl"})],
+        "connections": [("GET", "/api/connections"), ("DELETE", "/api/connections/3"),
+                        ("DELETE", "/api/connections/abc")],
+        "events": [("GET", "/api/events"), ("GET", "/api/events?types=request,devices"),
+                   ("GET", "/api/events?types=bogus")],
+        "metrics": [("GET", "/metrics")],
+        "static": [("GET", "/"), ("GET", "/index.html"), ("GET", "/app.js"), ("GET", "/style.css")],
+        "routing": [("GET", "/api/device/D1"), ("DELETE", "/api/devices/D1"), ("PATCH", "/api/state", {}),
+                    ("GET", "/api/%64evices/D1"), ("GET", "/api/devices/U3E0%5CG10"), ("GET", "/api%2Finfo"),
+                    ("GET", "//api//info?"), ("GET", "/api/info?x"), ("GET", "/api/info%"),
+                    ("GET", "/api/devices/D0?count=2&count=3&as=words&"), ("GET", "api/info")],
+    }
+    for name, requests in seeds.items():
+        write("fuzz_http", name, http(*requests))
+    # Every shipped scenario posted as the body, listed, then stopped.
+    for p in sorted((REPO / "scenarios" / "examples").glob("*.json")):
+        name = json.loads(p.read_text())["name"]
+        write("fuzz_http", "scenario_" + p.stem, http(("POST", "/api/scenarios", p.read_text()), ("GET", "/api/scenarios"),
+                                                    ("GET", "/api/faults"), ("GET", "/metrics"),
+                                                    ("DELETE", "/api/scenarios/" + name)))
+
+
 if __name__ == "__main__":
     if CORPUS.exists():
         shutil.rmtree(CORPUS)
     engine_and_prefix_seeds()
     field_seeds()
     json_seeds()
+    http_seeds()
     for d in sorted(CORPUS.iterdir()):
         print(d.name, len(list(d.iterdir())))
