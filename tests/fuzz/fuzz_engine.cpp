@@ -29,26 +29,14 @@
 #include "protocol/client.hpp"
 #include "protocol/engine.hpp"
 #include "tests/fuzz/fuzz_check.hpp"
+#include "tests/fuzz/write_watch.hpp"
 
 namespace {
 
 using namespace slmp;
 using protocol::Outcome;
 
-// Any write that changes a stored value is reported to the memory's observer
-// (devicemodel/device_memory.hpp), so watching is O(1) per request where a
-// full before/after compare of ~200k devices would dominate every execution.
-class Watch final : public devicemodel::WriteObserver {
-public:
-    void written(const devicemodel::DeviceSpec& spec, std::uint32_t first, std::uint32_t) override {
-        if (!changed) {
-            changed = true;
-            what = std::string(spec.symbol) + std::to_string(first);
-        }
-    }
-    bool changed = false;
-    std::string what;
-};
+using Watch = fuzz::WriteWatch;
 
 // Profiles parse once; a fresh Cpu per input keeps every run reproducible.
 const config::Profile& profile(std::size_t index) {

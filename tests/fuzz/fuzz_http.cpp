@@ -44,6 +44,7 @@
 #include "scenarios/runner.hpp"
 #include "station/station.hpp"
 #include "tests/fuzz/fuzz_check.hpp"
+#include "tests/fuzz/write_watch.hpp"
 
 namespace {
 
@@ -77,20 +78,10 @@ public:
     void refuse_connections(bool) override {}
 };
 
-// Reports every value change, as fuzz_engine's Watch does. The snapshot
-// compare below is independent of it: a write that bypassed the observer
-// would also be missing from the API's own change stream (/api/events).
-class Watch final : public devicemodel::WriteObserver {
-public:
-    void written(const devicemodel::DeviceSpec& spec, std::uint32_t first, std::uint32_t) override {
-        if (!changed) {
-            changed = true;
-            what = std::string(spec.symbol) + std::to_string(first);
-        }
-    }
-    bool changed = false;
-    std::string what;
-};
+// The snapshot compare below is independent of the write watch: a write that
+// bypassed the observer would also be missing from the API's own change
+// stream (/api/events).
+using Watch = fuzz::WriteWatch;
 
 // What the HTTP server builds around a station (http_server.cpp), plus an
 // intelligent module (buffer U3) for /api/buffer.
