@@ -178,7 +178,7 @@ TEST_CASE("persistence: write, stop, start, read back", "[cpu][persistence]") {
 }
 
 TEST_CASE("persistence: kill -9 during writes leaves a whole snapshot", "[cpu][persistence][crash]") {
-    // 20 kills at varied moments during about 10^4 acknowledged writes, snapshots every 5 ms.
+    // 20 kills at varied moments during at least 10^4 acknowledged writes, snapshots every 5 ms.
     // Each write sets D0-D99 to one new value in one request, so a whole snapshot holds 100
     // equal words; a torn one would not. The value restored is one that existed: never above
     // the last write sent, and at least the first write of the previous round that a later
@@ -220,11 +220,15 @@ TEST_CASE("persistence: kill -9 during writes leaves a whole snapshot", "[cpu][p
         write_next();
         first_of_previous_round = last_sent;
         const auto after_first_write = snapshot_time();
-        const int writes = std::uniform_int_distribution<int>(250, 750)(random);
+        // 500-700 acknowledged writes a round (so 20 rounds make at least 10^4), and more
+        // until one comes after a snapshot that saw this round.
+        const int writes = std::uniform_int_distribution<int>(500, 700)(random);
         auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+        int this_round = 1;
         int after_first_snapshot = 0;
-        while ((after_first_snapshot < writes || after_first_snapshot == 0) && std::chrono::steady_clock::now() < deadline) {
+        while ((this_round < writes || after_first_snapshot == 0) && std::chrono::steady_clock::now() < deadline) {
             write_next();
+            ++this_round;
             if (snapshot_time() != after_first_write) ++after_first_snapshot;
         }
         REQUIRE(after_first_snapshot > 0);
