@@ -5,8 +5,8 @@ measurement of issue 16 (docs/testing.md, "Slow and hostile clients").
 Starts slmp-sim with its default port settings (64 connections per port, 5 s
 partial-frame timeout, 300 s idle timeout) on free loopback ports, then:
   1. baseline: slmp-bench, 1 connection, 5 s of 1-word reads -> p99;
-  2. attack: N connections (default 1000) that each send 4 bytes of a 3E header
-     and wait, plus M garbage frames (default 10000) on short connections;
+  2. attack: M garbage frames (default 10000) on short connections, then N
+     connections (default 1000) that each send 4 bytes of a 3E header and wait;
   3. a well-behaved client (loopback 0619) tries to connect and be answered
      from the moment the attack is in place; the time until it is served;
   4. during: slmp-bench for 2 s while the half-frame connections are open
@@ -63,18 +63,18 @@ def garbage_frame(rng: random.Random) -> bytes:
     return b"5000" + bytes(rng.randrange(0x30, 0x47) for _ in range(rng.randrange(4, 40)))   # broken ASCII
 
 
-def send_garbage(port: int, count: int, rng: random.Random) -> int:
-    """Sends `count` garbage frames, 10 per connection; returns how many were sent."""
-    sent = 0
-    while sent < count:
+def send_garbage(port: int, count: int, rng: random.Random) -> tuple[int, int]:
+    """Sends `count` garbage frames, 10 per connection; returns (frames sent, connections refused)."""
+    sent = refused = 0
+    while sent < count and refused < count:
         try:
             with socket.create_connection(("127.0.0.1", port), timeout=1.0) as s:
                 for _ in range(min(10, count - sent)):
                     s.sendall(garbage_frame(rng))
                     sent += 1
         except OSError:
-            sent += 1   # refused or reset: the port is full or closed this one; still one frame's try
-    return sent
+            refused += 1   # refused or reset: the port is full, or the server closed it mid-way
+    return sent, refused
 
 
 def bench(bench_bin: str, port: int, seconds: float = 5) -> float:
@@ -115,7 +115,9 @@ def main() -> int:
 
             rng = random.Random(16)
             started = time.monotonic()
-            half = []
+            # Garbage first, while the port has free slots, so the frames reach the server.
+            sent, refused = send_garbage(port, args.garbage, rng)
+            half, half_started = [], time.monotonic()
             for _ in range(args.half):
                 try:
                     s = socket.create_connection(("127.0.0.1", port), timeout=0.5)
@@ -123,10 +125,9 @@ def main() -> int:
                     half.append(s)
                 except OSError:
                     pass   # refused: the port is at its connection limit
-            sent = send_garbage(port, args.garbage, rng)
             attack_s = time.monotonic() - started
-            print(f"attack: {len(half)} of {args.half} half-frame connections accepted by the kernel, "
-                  f"{sent} garbage frames, in {attack_s:.1f} s")
+            print(f"attack: {sent} garbage frames sent ({refused} connection(s) refused or reset), then "
+                  f"{len(half)} of {args.half} half-frame connections accepted by the kernel, in {attack_s:.1f} s")
 
             # The well-behaved client, from the moment the attack is in place.
             attack_done = time.monotonic()
@@ -142,7 +143,7 @@ def main() -> int:
             print(f"during: p99 {during:.1f} us while the half-frame connections are open (2 s, no bound)")
 
             # Afterwards: once the partial-frame timeout has closed every half-frame connection.
-            time.sleep(max(0.0, started + PARTIAL_FRAME_TIMEOUT_S + 1 - time.monotonic()))
+            time.sleep(max(0.0, half_started + PARTIAL_FRAME_TIMEOUT_S + 1 - time.monotonic()))
             after = bench(bench_bin, port)
             ratio = after / baseline if baseline > 0 else float("inf")
             print(f"after: p99 {after:.1f} us = {ratio:.2f}x the baseline (bound 2x)")

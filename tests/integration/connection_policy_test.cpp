@@ -39,6 +39,18 @@ bool serves(TcpClient& c, const std::string& data = "PING") {
     return frame == loopback_response(data);
 }
 
+// A new connection that is served, retried until `limit` passes (a refused
+// connect, or one reset from the backlog or closed by the server, tries again).
+std::optional<TcpClient> served_within(std::uint16_t port, std::chrono::milliseconds limit) {
+    auto deadline = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < deadline) {
+        auto c = TcpClient::connect(port);
+        if (c && serves(*c)) return c;
+        std::this_thread::sleep_for(20ms);
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 TEST_CASE("Idle timeout: a silent connection is closed by the server", "[policy][tcp][idle]") {
@@ -232,13 +244,7 @@ TEST_CASE("Slowloris: 300 half-frame connections do not keep a well-behaved clie
     INFO(attackers.size() << " half-frame connections were accepted");
     CHECK(attackers.size() >= 64);
     // Well within the idle timeout: only the partial-frame timeout can have freed a slot.
-    auto started = std::chrono::steady_clock::now();
-    std::optional<TcpClient> client;
-    while (!client && std::chrono::steady_clock::now() - started < 60s) {
-        client = TcpClient::connect(sim.tcp_port());
-        if (client && !serves(*client)) client.reset();   // reset from the backlog or closed: try again
-        if (!client) std::this_thread::sleep_for(50ms);
-    }
+    auto client = served_within(sim.tcp_port(), 60s);
     REQUIRE(client);
     CHECK(serves(*client, "SERVED"));
 }
@@ -264,13 +270,7 @@ TEST_CASE("Per-address cap: a client address at its limit has new connections cl
     // When one of the address's connections leaves, a new one is served (once the
     // server has seen the close: retried until then).
     a1.close();
-    auto deadline = std::chrono::steady_clock::now() + 10s;
-    std::optional<TcpClient> again;
-    while (!again && std::chrono::steady_clock::now() < deadline) {
-        again = TcpClient::connect(sim.tcp_port());
-        if (again && !serves(*again)) again.reset();
-        if (!again) std::this_thread::sleep_for(20ms);
-    }
+    auto again = served_within(sim.tcp_port(), 10s);
     REQUIRE(again);
     CHECK(serves(a2, "STILL"));
 }
