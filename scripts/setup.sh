@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(g++ cmake ninja-build ccache libboost-dev libboost-program-options-dev
           nlohmann-json3-dev libspdlog-dev catch2 python3-jsonschema
           chromium    # the web monitor's browser test (tests/browser)
+          tshark      # the Wireshark dissector's test (tests/wireshark)
           clang libclang-rt-14-dev)   # the sanitizer build and fuzzers (scripts/test-sanitizers.sh)
 command -v node >/dev/null 2>&1 || packages+=(nodejs)
 command -v npm >/dev/null 2>&1 || packages+=(npm)

@@ -7,14 +7,12 @@
 // to rewrite it after a deliberate change. It also fails when binary and ASCII
 // answer the same request differently — the codec must not change the meaning.
 #include <algorithm>
-#include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "config/builtin_profiles.hpp"
 #include "protocol/command_table.hpp"
 #include "support/device_commands.hpp"
-#include "support/files.hpp"
+#include "support/generated_section.hpp"
 
 using namespace slmp;
 using namespace slmp::test;
@@ -155,18 +153,5 @@ std::string render() {
 }  // namespace
 
 TEST_CASE("docs/compatibility.md matches what every profile answers to every command, binary and ASCII", "[compat]") {
-    const auto table = render();
-    auto doc = read_text(kDoc);
-    auto begin = doc.find(kBegin);
-    auto end = doc.find(kEnd);
-    REQUIRE(begin != std::string::npos);
-    REQUIRE(end != std::string::npos);
-    const auto documented = doc.substr(begin + kBegin.size(), end - begin - kBegin.size());
-    if (documented != table && std::getenv("SLMP_UPDATE_DOCS")) {
-        std::ofstream(kDoc) << doc.substr(0, begin + kBegin.size()) << table << doc.substr(end);
-        WARN("rewrote " << kDoc);
-        return;
-    }
-    INFO("docs/compatibility.md is stale; rerun with SLMP_UPDATE_DOCS=1 after checking the new table:\n" << table);
-    CHECK(documented == table);
+    check_generated_section(kDoc, kBegin, kEnd, render());
 }
