@@ -5,8 +5,10 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "devicemodel/cpu.hpp"
@@ -30,12 +32,18 @@ std::vector<std::string> builtin_profile_names();
 struct Profile {
     devicemodel::CpuProfile cpu;
     protocol::PortProfile port;
+    std::string description;   // one line, for --list-profiles
 };
+// "iQ-R", "QnU", "L", "QJ71E71", "iQ-F": as profiles, logs and the API write it.
+std::string_view family_name(devicemodel::Family family);
 // A built-in profile by name (case-insensitive), or a profile JSON file by path
 // (anything containing '/' or ending in ".json").
 Profile load_profile(const std::string& name_or_path);
-// Parses profile JSON text; `source` names it in error messages.
-Profile parse_profile(const std::string& json_text, const std::string& source);
+// Parses profile JSON text; `source` names it in error messages. A profile may
+// "extends" a built-in one by name (a file may also extend a file, relative to
+// `directory`) and give only what differs (profile_inheritance.cpp).
+Profile parse_profile(const std::string& json_text, const std::string& source,
+                      const std::filesystem::path& directory = {});
 
 // --- Server configuration ----------------------------------------------------
 enum class DataCode : std::uint8_t { Binary, Ascii, Auto };
@@ -57,6 +65,8 @@ struct PortConfig {
     // its first byte, so half-frames cannot hold a connection slot; 0 = never.
     unsigned partial_frame_timeout_ms = 5000;
     unsigned max_connections_per_address = 0;   // TCP: clients from one IP address at once; 0 = no limit
+    bool remote_password = true;           // the CPU's remote password (if any) locks this port's connections
+    std::optional<bool> online_change = std::nullopt;   // writes served in RUN; unset: the profile's default
 };
 
 struct InitialValue {

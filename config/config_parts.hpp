@@ -1,6 +1,8 @@
 // Pieces of the configuration parser shared by its files (not for other modules).
 #pragma once
 
+#include <filesystem>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -8,6 +10,15 @@
 #include "config/json_path.hpp"
 
 namespace slmp::config {
+
+// Where a profile's JSON came from: its name in messages, and for a file the
+// folder a relative "extends" is resolved against (empty for built-in ones).
+struct ProfileSource {
+    std::string name;
+    std::filesystem::path directory;
+};
+// The profile's JSON with its "extends" chain resolved (profile_inheritance.cpp).
+nlohmann::json resolve_profile_json(const std::string& json_text, const ProfileSource& source);
 
 std::vector<std::pair<devicemodel::Area, std::uint32_t>> parse_device_sizes(const JsonAt& sizes);
 std::vector<InitialValue> parse_initial_values(const JsonAt& devices);

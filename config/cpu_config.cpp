@@ -130,7 +130,7 @@ void lockout(const JsonAt& at, devicemodel::RuntimeConfig& runtime) {
 
 void cpu_object(const JsonAt& at, CpuRuntimeConfig& cpu) {
     at.only_keys({"switch", "scan_time_ms", "remote_reset", "output_off_at_stop", "password", "password_lockout",
-                  "latch", "timers", "counters", "error"});
+                  "latch", "timers", "counters", "error", "system_protect"});
     auto& r = cpu.runtime;
     if (at.has("switch")) r.run_switch = parse_run_switch(at["switch"].string(), at.pointer() + "/switch");
     if (at.has("scan_time_ms")) {
@@ -142,6 +142,7 @@ void cpu_object(const JsonAt& at, CpuRuntimeConfig& cpu) {
     if (at.has("output_off_at_stop")) r.output_off_at_stop = at["output_off_at_stop"].boolean();
     if (at.has("password")) r.password = at["password"].string();
     if (at.has("password_lockout")) lockout(at["password_lockout"], r);
+    if (at.has("system_protect")) r.system_protect = at["system_protect"].boolean();
     if (at.has("latch")) latch(at["latch"], cpu);
     if (at.has("timers")) timers(at["timers"], cpu);
     if (at.has("counters")) counters(at["counters"], cpu);

@@ -7,6 +7,7 @@
 
 #include "config/builtin_profiles.hpp"
 #include "config/config.hpp"
+#include "config/config_parts.hpp"
 #include "config/json_path.hpp"
 
 namespace slmp::config {
@@ -42,11 +43,8 @@ Refusal refusal(const JsonAt& at) {
 
 Family family(const JsonAt& at) {
     auto text = at.string();
-    if (text == "iQ-R") return Family::IQR;
-    if (text == "QnU") return Family::QnU;
-    if (text == "L") return Family::L;
-    if (text == "QJ71E71") return Family::QJ71E71;
-    if (text == "iQ-F") return Family::IQF;
+    for (auto f : {Family::IQR, Family::QnU, Family::L, Family::QJ71E71, Family::IQF})
+        if (text == family_name(f)) return f;
     at.fail("unknown family '" + text + "'", "use iQ-R, QnU, L, QJ71E71 or iQ-F");
 }
 
@@ -70,17 +68,29 @@ std::vector<Area> areas(const JsonAt& at) {
 
 }  // namespace
 
-Profile parse_profile(const std::string& json_text, const std::string& source) {
-    auto json = parse_json(json_text, source);
+std::string_view family_name(Family family) {
+    switch (family) {
+        case Family::IQR: return "iQ-R";
+        case Family::QnU: return "QnU";
+        case Family::L: return "L";
+        case Family::QJ71E71: return "QJ71E71";
+        case Family::IQF: return "iQ-F";
+    }
+    return "?";
+}
+
+Profile parse_profile(const std::string& json_text, const std::string& source, const std::filesystem::path& directory) {
+    auto json = resolve_profile_json(json_text, {source, directory});
     JsonAt root(json, source);
     root.only_keys({"name", "description", "type_name", "model_code", "family", "frame_4e", "iqr_subcommands",
                     "unsupported_commands", "end_codes", "limits", "device_sizes", "start_only_range_check",
                     "read_only_devices", "size_registers", "zr_ascii_hex", "mixed_block_write",
-                    "station_buffer_words", "remote_password_length"});
+                    "station_buffer_words", "remote_password_length", "online_change"});
     Profile profile;
     auto& p = profile.cpu;
     auto& port = profile.port;
     p.name = root["name"].string();
+    if (root.has("description")) profile.description = root["description"].string();
     p.type_name = root["type_name"].string();
     if (p.type_name.size() > 16) root["type_name"].fail("longer than 16 characters", "shorten it (0101 sends 16)");
     p.model_code = root["model_code"].hex_code();
@@ -97,12 +107,16 @@ Profile parse_profile(const std::string& json_text, const std::string& source) {
     }
 
     auto codes = root["end_codes"];
-    codes.only_keys({"not_supported", "out_of_range", "not_accessible", "unknown_device", "bad_unit"});
+    codes.only_keys({"not_supported", "out_of_range", "not_accessible", "unknown_device", "bad_unit",
+                     "online_change_refused", "system_protect"});
     port.not_supported_code = codes["not_supported"].hex_code();
     port.out_of_range_code = codes["out_of_range"].hex_code();
     port.not_accessible_code = codes["not_accessible"].hex_code();
     port.unknown_device_code = codes["unknown_device"].hex_code();
     port.bad_unit_code = codes["bad_unit"].hex_code();
+    if (codes.has("online_change_refused")) port.online_change_code = codes["online_change_refused"].hex_code();
+    if (codes.has("system_protect")) port.system_protect_code = codes["system_protect"].hex_code();
+    if (root.has("online_change")) port.online_change = root["online_change"].boolean();
 
     auto limits = root["limits"];
     limits.only_keys({"batch_words", "batch_bits_binary", "batch_bits_ascii", "loopback_bytes", "random_read_points",
@@ -173,7 +187,7 @@ Profile load_profile(const std::string& name_or_path) {
         if (!file) throw ConfigError(name_or_path + ": cannot open the profile file; check the path");
         std::stringstream text;
         text << file.rdbuf();
-        return parse_profile(text.str(), name_or_path);
+        return parse_profile(text.str(), name_or_path, std::filesystem::path(name_or_path).parent_path());
     }
     for (const auto& p : builtin_profiles())
         if (upper(std::string(p.name)) == upper(name_or_path))

@@ -15,7 +15,7 @@ namespace {
 
 PortConfig port(const JsonAt& at) {
     at.only_keys({"transport", "port", "data_code", "max_connections", "idle_timeout_ms",
-                "partial_frame_timeout_ms", "max_connections_per_address"});
+                "partial_frame_timeout_ms", "max_connections_per_address", "remote_password", "online_change"});
     PortConfig p;
     auto transport = at["transport"].string();
     if (transport == "tcp") p.transport = Transport::Tcp;
@@ -32,6 +32,8 @@ PortConfig port(const JsonAt& at) {
         p.partial_frame_timeout_ms = static_cast<unsigned>(at["partial_frame_timeout_ms"].unsigned_int(86400000));
     if (at.has("max_connections_per_address"))
         p.max_connections_per_address = static_cast<unsigned>(at["max_connections_per_address"].unsigned_int(4096));
+    if (at.has("remote_password")) p.remote_password = at["remote_password"].boolean();
+    if (at.has("online_change")) p.online_change = at["online_change"].boolean();
     return p;
 }
 

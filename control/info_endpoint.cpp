@@ -1,6 +1,7 @@
 // GET /api/info — what is being simulated and where: the profile, the device
 // sizes (as configured, so clients can build their address catalogue) and
 // the ports. docs/api.md, "Info".
+#include "config/config.hpp"
 #include "control/api.hpp"
 #include "control/hex_text.hpp"
 #include "control/timestamp.hpp"
@@ -10,17 +11,6 @@ namespace slmp::control {
 using nlohmann::json;
 
 namespace {
-
-std::string_view family_name(devicemodel::Family family) {
-    switch (family) {
-        case devicemodel::Family::IQR: return "iQ-R";
-        case devicemodel::Family::QnU: return "QnU";
-        case devicemodel::Family::L: return "L";
-        case devicemodel::Family::QJ71E71: return "QJ71E71";
-        case devicemodel::Family::IQF: return "iQ-F";
-    }
-    return "?";
-}
 
 Reply info(Api& api) {
     const auto& profile = api.station.cpu().profile();
@@ -46,7 +36,7 @@ Reply info(Api& api) {
         {"version", "0.1.0"},
         {"started", iso_time(api.started)},
         {"profile", {{"name", profile.name}, {"type_name", profile.type_name}, {"model_code", hex4(profile.model_code)},
-                     {"family", family_name(profile.family)}}},
+                     {"family", config::family_name(profile.family)}}},
         {"device_sizes", std::move(sizes)},
         {"devices", std::move(devices)},
         {"ports", {{"bind", api.ports.bind}, {"tcp", api.ports.tcp}, {"udp", api.ports.udp}, {"http", api.ports.http}}},

@@ -52,6 +52,9 @@ struct RuntimeConfig {
     std::vector<CounterRange> counters;
     std::vector<LatchRange> latch;
     std::optional<CpuError> error;          // a CPU error present from the start
+    // The CPU's system protect (security key / write protection): writes and
+    // remote operations over any port are refused (PortProfile::system_protect_code).
+    bool system_protect = false;
 };
 
 }  // namespace slmp::devicemodel

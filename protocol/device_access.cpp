@@ -15,6 +15,8 @@ using Kind = DeviceExtension::Kind;
 // End code when an extension names a module, network or CPU that is not there
 // (chosen: real CPUs answer 4043 for Extend Unit module 0000 — hardware §2).
 constexpr EndCode kNoSuchModule = EndCode::ModuleNotPresent;
+// End code for a write to another CPU's buffer memory.
+constexpr EndCode kOtherCpusBuffer = EndCode::ExtendedTargetRefused;
 
 bool is_in(const DeviceSpec& spec, std::initializer_list<std::string_view> symbols) {
     return std::find(symbols.begin(), symbols.end(), spec.symbol) != symbols.end();
@@ -92,6 +94,10 @@ EndCode resolve(CommandContext& ctx, const DeviceField& field, Use use, Target& 
             if (!cpu_place) return kNoSuchModule;
             auto* cpu = ctx.cpus[static_cast<std::size_t>(place - 0x3E0)];
             if (!cpu) return kNoSuchModule;
+            // Each CPU of a multi-CPU rack writes only its own CPU buffer memory;
+            // another CPU's is read-only to it (issue 14; 414A as seen on
+            // protected extended targets, hardware-behaviour §2).
+            if (writes(use) && cpu != &ctx.cpu) return kOtherCpusBuffer;
             target.memory = &cpu->memory();
             target.owner = cpu;
             break;

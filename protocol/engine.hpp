@@ -34,9 +34,20 @@ struct Session {
     std::uint64_t id = 0;
     MonitorRegistration monitor;   // per connection: another client's 0801 does not replace it
     // Remote password (1630/1631): a connection starts locked whenever the CPU
-    // has a password; Unlock opens this connection only (slmp-labels-remote-misc.md §6).
+    // has a password and its port has the password enabled; Unlock opens this
+    // connection only (slmp-labels-remote-misc.md §6).
     bool password_unlocked = false;
+    // Settings of the port the connection came in on (config::PortConfig, with
+    // the profile's defaults); station::Station::new_session fills them.
+    struct PortSettings {
+        bool remote_password = true;   // the remote password guards this port
+        bool online_change = true;     // writes are served while the CPU is in RUN
+    } port;
 };
+
+// Whether the remote password guards this connection: the CPU has one and the
+// connection's port has it enabled.
+bool password_guards(const devicemodel::Cpu& cpu, const Session& session);
 
 // CPU No.1–4 of a multi-CPU system; [0] is the CPU whose port the client uses.
 using CpuSet = std::array<devicemodel::Cpu*, 4>;

@@ -57,7 +57,7 @@ std::string route_note(const Route& route) {
 // Remote password (slmp-labels-remote-misc.md §6): a locked connection gets
 // C201 for everything but the rows that are exempt (Unlock 1630, Lock 1631).
 bool locked_out(const devicemodel::Cpu& cpu, const Session& session, std::uint16_t command) {
-    if (!cpu.runtime().password().configured() || session.password_unlocked) return false;
+    if (!password_guards(cpu, session) || session.password_unlocked) return false;
     const auto* row = find_any_row(command);
     return !row || !row->password_exempt();
 }
@@ -82,7 +82,28 @@ std::optional<Outcome> port_refusal(const devicemodel::CpuProfile& cpu, const Po
     return std::nullopt;
 }
 
+// The target CPU's protections: system protect refuses writes and remote
+// operations (the password's own Lock/Unlock stay served); a port without
+// online change refuses writes while the CPU is in RUN. Both are checked
+// before the handler, so a refused request changes nothing.
+std::optional<Outcome> protection_refusal(const devicemodel::Cpu& cpu, const PortProfile& port, const CommandSpec& spec,
+                                          const Session& session, Reply& reply) {
+    const bool remote_operation = spec.operator_command() && !spec.password_exempt();
+    if (cpu.runtime().config().system_protect && (spec.writes() || remote_operation))
+        return reply.error(end_code(port.system_protect_code),
+                           std::string(spec.name) + " refused: the CPU's system protect is on (cpu.system_protect)");
+    if (spec.writes() && !session.port.online_change && cpu.runtime().state() == devicemodel::RunState::Run)
+        return reply.error(end_code(port.online_change_code),
+                           std::string(spec.name) + " refused: the CPU is in RUN and this port has online change "
+                                                    "disabled (online_change: false)");
+    return std::nullopt;
+}
+
 }  // namespace
+
+bool password_guards(const devicemodel::Cpu& cpu, const Session& session) {
+    return cpu.runtime().password().configured() && session.port.remote_password;
+}
 
 Outcome Engine::execute(const Request& request, Session& session) {
     if (!request.complete()) return unframed(request, options_.max_frame_bytes);
@@ -108,6 +129,8 @@ Outcome Engine::execute(const Request& request, Session& session) {
     if (spec->control_cpu_only() && request.target != 0)
         return reply.error(end_code(profile.not_supported_code),
                            std::string(spec->name) + " cannot reach CPU No.2-4 of a multi-CPU system (Appendix 3)");
+    if (auto refused = protection_refusal(target, ports_[request.target], *spec, session, reply))
+        return std::move(*refused);
 
     FieldReader in(request.header.codec, request.data, CodecOptions{profile.zr_ascii_hex});
     FieldWriter out(request.header.codec, CodecOptions{ports_[request.target].zr_ascii_hex});

@@ -45,6 +45,13 @@ struct PortProfile {
     std::uint16_t not_accessible_code = 0x4030;    // device this command/path may not touch
     std::uint16_t unknown_device_code = 0xC05B;    // device code the CPU does not know
     std::uint16_t bad_unit_code = 0xC05C;          // bit units on a word device and the like
+    // A write while the CPU is in RUN on a port with online change disabled
+    // (0055: the L/Q E71-style code; slmp-labels-remote-misc.md §10.4).
+    std::uint16_t online_change_code = 0x0055;
+    // A write or remote operation while the CPU's system protect is on
+    // (4004, inferred: the 4xxx "system protect" code of Q/L CPUs).
+    std::uint16_t system_protect_code = 0x4004;
+    bool online_change = true;                     // the port's default: writes served in RUN
 
     PointLimit batch_words;           // 0401/1401 word units
     PointLimit batch_bits_binary;     // 0401/1401 bit units, binary code

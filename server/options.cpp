@@ -80,7 +80,13 @@ CommandLine parse_command_line(int argc, char** argv) {
         return cl;
     }
     if (vm.count("list-profiles")) {
-        for (const auto& name : config::builtin_profile_names()) std::cout << name << "\n";
+        // One line each: the name to give --profile, what 0101 answers, the family, the description.
+        for (const auto& name : config::builtin_profile_names()) {
+            auto profile = config::load_profile(name);
+            std::cout << fmt::format("{:<20} {:<16} {:04X}  {:<8} {}\n", name, profile.cpu.type_name,
+                                     profile.cpu.model_code, config::family_name(profile.cpu.family),
+                                     profile.description);
+        }
         cl.exit_now = true;
         return cl;
     }

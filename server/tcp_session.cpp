@@ -29,8 +29,8 @@ TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Station& station, 
       idle_timeout_(port.idle_timeout_ms),
       partial_frame_timeout_(port.partial_frame_timeout_ms),
       deadline_timer_(socket_.get_executor()),
+      session_(station.new_session(port)),
       on_closed_(std::move(on_closed)) {
-    session_.id = station_.next_session_id();
     boost::system::error_code ec;
     peer_.transport = protocol::Transport::Tcp;
     if (auto remote = socket_.remote_endpoint(ec); ec) {

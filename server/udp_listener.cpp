@@ -14,9 +14,12 @@ using protocol::Outcome;
 
 UdpListener::UdpListener(asio::io_context& io, station::Station& station, const config::PortConfig& port,
                          const asio::ip::address& bind)
-    : station_(station), policy_(to_policy(port.data_code)), socket_(io, udp::endpoint(bind, port.port)) {
+    : station_(station),
+      policy_(to_policy(port.data_code)),
+      config_(port),
+      session_(station.new_session(port)),
+      socket_(io, udp::endpoint(bind, port.port)) {
     port_ = socket_.local_endpoint().port();
-    session_.id = station_.next_session_id();
     asio::co_spawn(io, serve(), station::log_exception("UDP port " + std::to_string(port_) + ": receive loop failed"));
 }
 
@@ -51,8 +54,7 @@ asio::awaitable<void> UdpListener::serve() {
 }
 
 void UdpListener::restart_session() {
-    session_ = protocol::Session{};
-    session_.id = station_.next_session_id();
+    session_ = station_.new_session(config_);
 }
 
 void UdpListener::stop() {

@@ -28,8 +28,9 @@ private:
 
     station::Station& station_;
     protocol::DataCodePolicy policy_;
-    boost::asio::ip::udp::socket socket_;
+    config::PortConfig config_;   // its settings, for the sessions after a restart
     protocol::Session session_;
+    boost::asio::ip::udp::socket socket_;
     std::uint16_t port_ = 0;
 };
 

@@ -70,6 +70,14 @@ bool Station::save_snapshot(std::string_view why) {
     return persistence_ && persistence_->save(why);
 }
 
+protocol::Session Station::new_session(const config::PortConfig& port) {
+    protocol::Session session;
+    session.id = next_session_id();
+    session.port.remote_password = port.remote_password;
+    session.port.online_change = port.online_change.value_or(engine_.port().online_change);
+    return session;
+}
+
 Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
                         const protocol::Peer& peer) {
     activity_.request_starting();

@@ -57,6 +57,10 @@ public:
     void restart();
     // A new protocol session's id (a TCP connection, a UDP port's session).
     std::uint64_t next_session_id() { return next_session_id_++; }
+    // A new protocol session for a connection on `port`: a fresh id and the
+    // port's settings (remote password, online change), with the profile's
+    // defaults where the port sets none.
+    protocol::Session new_session(const config::PortConfig& port);
 
     // With a state directory: saves a snapshot now (false on failure).
     bool has_state_directory() const { return persistence_ != nullptr; }

@@ -26,15 +26,18 @@ struct ByteWindow {
 // 0601/1601 addressing: start address = buffer word × 2 + the module's head
 // address; the module number is its start I/O ÷ 16. Module numbers 03E0–03E3
 // are the CPU buffer memory of CPU No.1–4 (hardware-behaviour.md §7), whose
-// head address is 0 (chosen: the manual's table has no entry for a CPU).
+// head address is 0 (chosen: the manual's table has no entry for a CPU). A
+// write to another CPU's buffer memory answers 414A: each CPU of a rack writes
+// only its own (issue 14).
 EndCode locate(CommandContext& ctx, std::uint32_t address, std::uint16_t bytes, std::uint16_t module_number,
-               ByteWindow& window) {
+               bool writing, ByteWindow& window) {
     if (module_number == 0x0000) return EndCode::ModuleNotPresent;
     if (module_number == 0x03FF) return EndCode::ModuleNotAccessible;
     std::uint32_t head = 0;
     if (module_number >= 0x03E0 && module_number <= 0x03E3) {
         auto* cpu = ctx.cpus[module_number - 0x03E0u];
         window.memory = cpu ? &cpu->memory() : nullptr;
+        if (cpu && writing && cpu != &ctx.cpu) return EndCode::ExtendedTargetRefused;
     } else if (auto* module = ctx.cpu.module(module_number)) {
         window.memory = &module->memory;
         head = module->head_address;
@@ -97,7 +100,7 @@ EndCode extend_unit_read(CommandContext& ctx) {
     auto module_number = ctx.in.u16("module number");
     if (!ctx.in.finish()) return ctx.in.error();
     ByteWindow window;
-    if (auto code = locate(ctx, address, bytes, module_number, window); code != EndCode::Ok) return code;
+    if (auto code = locate(ctx, address, bytes, module_number, false, window); code != EndCode::Ok) return code;
     // Bytes in memory order, low byte first, in both codecs (ASCII: 2 characters a byte).
     for (std::uint32_t i = 0; i < bytes; ++i) ctx.out.u8(byte_at(window, i));
     return EndCode::Ok;
@@ -109,7 +112,7 @@ EndCode extend_unit_write(CommandContext& ctx) {
     auto module_number = ctx.in.u16("module number");
     if (!ctx.in.ok()) return ctx.in.error();
     ByteWindow window;
-    if (auto code = locate(ctx, address, bytes, module_number, window); code != EndCode::Ok) return code;
+    if (auto code = locate(ctx, address, bytes, module_number, true, window); code != EndCode::Ok) return code;
     std::vector<std::uint8_t> data(bytes);
     for (auto& byte : data) byte = ctx.in.u8("write data");
     if (!ctx.in.finish()) return ctx.in.error();

@@ -44,7 +44,7 @@ EndCode password_unlock(CommandContext& ctx) {
     PasswordRequest request;
     if (auto code = read_request(ctx, request); code != EndCode::Ok) return code;
     auto& runtime = request.station->runtime();
-    if (ctx.session.password_unlocked || !runtime.password().configured()) return EndCode::Ok;
+    if (ctx.session.password_unlocked || !password_guards(*request.station, ctx.session)) return EndCode::Ok;
     auto code = verdict(runtime.password().check(request.text, runtime.now()));
     if (code == EndCode::Ok) ctx.session.password_unlocked = true;
     return code;
@@ -54,8 +54,8 @@ EndCode password_lock(CommandContext& ctx) {
     PasswordRequest request;
     if (auto code = read_request(ctx, request); code != EndCode::Ok) return code;
     auto& runtime = request.station->runtime();
-    // Without a configured password nothing can match (chosen: C810, not a silent 0000).
-    if (!runtime.password().configured()) return EndCode::RemotePasswordMismatch;
+    // Without a password guarding this port nothing can match (chosen: C810, not a silent 0000).
+    if (!password_guards(*request.station, ctx.session)) return EndCode::RemotePasswordMismatch;
     if (!ctx.session.password_unlocked) return EndCode::Ok;
     auto code = verdict(runtime.password().check(request.text, runtime.now()));
     if (code == EndCode::Ok) ctx.session.password_unlocked = false;

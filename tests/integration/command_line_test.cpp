@@ -89,7 +89,11 @@ TEST_CASE("Help, version and list-profiles options print and exit 0", "[cli]") {
 
     auto profiles = run_sim({"--list-profiles"});
     CHECK(profiles.exit_code == 0);
-    CHECK(profiles.out.find("R08CPU") != std::string::npos);
+    // One line a profile: the --profile name, what 0101 answers, the family, the description.
+    CHECK(lines_of(profiles.out).size() >= 22);
+    CHECK(profiles.out.find("R16CPU               R16CPU           4802  iQ-R     MELSEC iQ-R R16CPU") !=
+          std::string::npos);
+    CHECK(profiles.out.find("FX5UC-32MT           FX5UC-32MT/D     4A91  iQ-F") != std::string::npos);
 }
 
 TEST_CASE("The ready file lists every bound port and the pid", "[cli][ready]") {

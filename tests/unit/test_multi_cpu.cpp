@@ -1,7 +1,7 @@
 // A multi-CPU system (slmp-frames-and-devices.md §9 / Appendix 3): CPU No.1–4
 // are reached through one port with module I/O 03E0–03E3 (03FF = the CPU of
 // the port). Each CPU has its own memory; U3E1\G reaches CPU No.2's buffer
-// memory from anywhere; Entry/Execute Monitor, Memory 0613/1613, Self Test 0619
+// memory from anywhere, but only CPU No.2 writes it (414A for the others); Entry/Execute Monitor, Memory 0613/1613, Self Test 0619
 // and Clear Error 1617 cannot reach CPU No.2–4 (C059); a CPU that is not
 // configured answers 4B02 (chosen, docs/end-codes.md).
 #include "support/device_commands.hpp"
@@ -67,11 +67,38 @@ TEST_CASE("U3E1\\G reaches CPU No.2's buffer memory, U3E0\\G CPU No.1's", "[mult
         CHECK(conn.exchange(wire, random_read_req(0x0082, {g7(0x3E0), g7(0x3E1)}, {}), route) ==
               wire.expect(ok(words({1, 2})), route));
     }
-    CHECK(conn.exchange(wire, word(0x1401) + word(0x0082) + g7(0x3E1) + word(1) + word(0x2222)) == wire.expect(ok()));
+    // Each CPU writes only its own buffer memory: from CPU No.1's route a write to
+    // U3E1 answers 414A and changes nothing; from CPU No.2's own route it is served.
+    const auto write_g7 = [&](std::uint16_t io, std::uint16_t value) {
+        return word(0x1401) + word(0x0082) + g7(io) + word(1) + word(value);
+    };
+    CHECK(conn.exchange(wire, write_g7(0x3E1, 0x2222)) == wire.expect(error(0x414A, 0x1401, 0x0082)));
+    CHECK(station.two.memory().value(spec_of("G"), 7) == 0x0002);
+    const auto r2 = cpu_route(2);
+    CHECK(conn.exchange(wire, write_g7(0x3E1, 0x2222), r2) == wire.expect(ok(), r2));
     CHECK(station.two.memory().value(spec_of("G"), 7) == 0x2222);
+    CHECK(conn.exchange(wire, write_g7(0x3E0, 0x1111), r2) == wire.expect(error(0x414A, 0x1401, 0x0082, r2), r2));
     CHECK(station.one.memory().value(spec_of("G"), 7) == 0x0001);
-    // Extend Unit with module number 03E1 reaches the same memory (head address 0).
+    // The same through HG and through the random and block writes.
+    auto hg3 = [](std::uint16_t io) { return ext_device(Form::IQR, "HG3", cpu_buffer(io)); };
+    CHECK(conn.exchange(wire, word(0x1401) + word(0x0082) + hg3(0x3E1) + word(1) + word(5)) ==
+          wire.expect(error(0x414A, 0x1401, 0x0082)));
+    CHECK(conn.exchange(wire, random_write_words_req(0x0082, {{g7(0x3E1), 0x3333}}, {})) ==
+          wire.expect(error(0x414A, 0x1402, 0x0082)));
+    CHECK(conn.exchange(wire, block_write_req(0x0082, {{g7(0x3E1), {0x4444}}}, {})) ==
+          wire.expect(error(0x414A, 0x1406, 0x0082)));
+    CHECK(station.two.memory().value(spec_of("G"), 7) == 0x2222);
+    CHECK(station.two.memory().value(spec_of("HG"), 3) == 0);
+    // Own buffer memory through U3E0 from CPU No.1 is written as before.
+    CHECK(conn.exchange(wire, write_g7(0x3E0, 0x0101)) == wire.expect(ok()));
+    CHECK(station.one.memory().value(spec_of("G"), 7) == 0x0101);
+    // Extend Unit with module number 03E1 reaches the same memory (head address 0):
+    // read from anywhere, written only from CPU No.2.
     CHECK(conn.exchange(wire, extend_unit_read_req(14, 2, 0x03E1)) == wire.expect(ok(memory_bytes({0x22, 0x22}))));
+    CHECK(conn.exchange(wire, extend_unit_write_req(14, 0x03E1, {0x55, 0x55})) ==
+          wire.expect(error(0x414A, 0x1601, 0x0000)));
+    CHECK(conn.exchange(wire, extend_unit_write_req(14, 0x03E1, {0x55, 0x55}), r2) == wire.expect(ok(), r2));
+    CHECK(station.two.memory().value(spec_of("G"), 7) == 0x5555);
     // CPU No.3 is not configured: its buffer memory is not there (4043, as a missing module).
     CHECK(conn.exchange(wire, random_read_req(0x0082, {g7(0x3E2)}, {})) == wire.expect(error(0x4043, 0x0403, 0x0082)));
     CHECK(conn.exchange(wire, extend_unit_read_req(14, 2, 0x03E2)) == wire.expect(error(0x4043, 0x0601, 0x0000)));
