@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
 namespace slmp::server {
@@ -67,10 +68,11 @@ void Server::write_ready_file() const {
     auto temp = path;
     temp += ".tmp";
     {
-        std::ofstream out(temp);
-        out << "{\"tcp\":[" << port_list(listeners_.tcp_ports()) << "],\"udp\":[" << port_list(listeners_.udp_ports()) << "]";
-        if (http_) out << ",\"http\":" << http_->port();
-        out << ",\"pid\":" << getpid() << "}\n";
+        // A port kind with no ports is an empty list (port_list's "-" is for the log line).
+        nlohmann::json ready{{"tcp", listeners_.tcp_ports()}, {"udp", listeners_.udp_ports()}};
+        if (http_) ready["http"] = http_->port();
+        ready["pid"] = getpid();
+        std::ofstream(temp) << ready.dump() << "\n";
     }
     std::filesystem::rename(temp, path);
 }
