@@ -130,7 +130,7 @@ std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::strin
         for (const auto* part : parts) {
             w.u8(static_cast<std::uint8_t>(part->part));
             std::vector<std::uint32_t> values(size);
-            for (std::uint32_t n = 0; n < size; ++n) values[n] = memory.value(*part, n);
+            memory.read_part(*part, values);
             write_values(w, values);
         }
     }
@@ -193,9 +193,14 @@ RestoreResult restore_snapshot(std::span<const std::uint8_t> bytes, DeviceMemory
             result.warnings.push_back(std::string(area_name(a.area)) + " was saved with " + std::to_string(a.size) +
                                       " points and is now " + std::to_string(size) + "; the common part was restored");
         auto n_max = std::min(size, a.size);
-        for (const auto& part : a.parts)
+        for (const auto& part : a.parts) {
+            if (scope == RestoreScope::All) {
+                memory.write_part(*part.spec, std::span(part.values).first(n_max));
+                continue;
+            }
             for (std::uint32_t n = 0; n < n_max; ++n)
-                if (scope == RestoreScope::All || latch.latched(a.area, n)) memory.set_value(*part.spec, n, part.values[n]);
+                if (latch.latched(a.area, n)) memory.set_value(*part.spec, n, part.values[n]);
+        }
     }
     result.ok = true;
     return result;

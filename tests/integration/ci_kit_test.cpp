@@ -168,7 +168,7 @@ TEST_CASE("reset: back to the configuration's initial state; drop_connections cl
 
     REQUIRE(post(port, "/api/reset", R"({"drop_connections": true})").status == 200);
     auto closed = link.client().recv_some(kReplyTimeout);
-    CHECK(closed.status == RecvStatus::Eof);
+    CHECK((closed.status == RecvStatus::Eof || closed.status == RecvStatus::Error));
     CHECK(post(port, "/api/reset", R"({"drop": true})").error() ==
           "unknown key \"drop\" in the body; send {\"drop_connections\": true} (or no body)");
 }
@@ -279,7 +279,7 @@ TEST_CASE("wait: answers when an SLMP write lands, 408 with the last value at th
     CHECK(answered.json()["condition"] == "equals 5");
 
     auto bit = send_request(port, "/api/devices/M3/wait?equals=1&timeout_ms=600000");
-    REQUIRE(ask(link, client::write_bits(kBin.options(), addr("M3"), std::vector<bool>{true})) == show(ok(kBin)));
+    REQUIRE(ask(link, client::write_bits(kBin.options(), addr("M3"), std::vector<std::uint8_t>{1})) == show(ok(kBin)));
     CHECK(read_response(bit).json()["value"] == 1);
 
     auto greater = http_get(port, "/api/devices/D100/wait?greater=4&timeout_ms=10");

@@ -52,6 +52,7 @@ def start(binary=None, config=None, profile=None, scenarios=(), args=(), workdir
     (exit code 2: the one-line error) or is not ready within ``ready_timeout`` seconds.
     """
     workdir = pathlib.Path(workdir or tempfile.mkdtemp(prefix="slmp-sim-"))
+    workdir.mkdir(parents=True, exist_ok=True)
     ready = workdir / "ready.json"
     log = workdir / "slmp-sim.log"
     command = [find_binary(binary), "--bind", "127.0.0.1", "--tcp-port", "0", "--udp-port", "0", "--http-port", "0",
