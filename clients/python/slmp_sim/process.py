@@ -17,7 +17,7 @@ def find_binary(explicit=None):
     for candidate in (explicit, os.environ.get("SLMP_SIM_BINARY"), shutil.which("slmp-sim"),
                       _REPO / "build" / "server" / "slmp-sim"):
         if candidate and pathlib.Path(candidate).is_file():
-            return str(candidate)
+            return str(pathlib.Path(candidate).resolve())
     raise FileNotFoundError("slmp-sim not found: set SLMP_SIM_BINARY, pass --slmp-sim-binary, or put it on PATH")
 
 

@@ -106,3 +106,27 @@ def test_scenario_load_and_fault(slmp_sim):
     assert write_words(slmp_sim.tcp_port, "D", 100, [1]) == 0
     slmp_sim.scenario.stop("refuse")
     assert slmp_sim.scenario.list() == []
+
+
+def test_command_line(slmp_sim):
+    import subprocess
+    import sys
+
+    def cli(*args):
+        return subprocess.run([sys.executable, "-m", "slmp_sim", "--http-port", str(slmp_sim.http_port)] + list(args),
+                              capture_output=True, text=True, timeout=60)
+
+    assert json.loads(cli("set", "D30", "7").stdout)["values"] == [7]
+    assert json.loads(cli("snapshot", "cli").stdout)["name"] == "cli"
+    assert json.loads(cli("wait", "D30", "--equals", "7", "--timeout-ms", "1000").stdout) == {"value": 7}
+    timed_out = cli("wait", "D30", "--equals", "8", "--timeout-ms", "20")
+    assert timed_out.returncode == 3
+    assert "last value is 7" in timed_out.stderr
+    assert json.loads(cli("clock", "frozen").stdout)["mode"] == "frozen"
+    assert json.loads(cli("clock", "step", "--scans", "2").stdout)["mode"] == "frozen"
+    cli("set", "D30", "9")
+    assert json.loads(cli("restore", "cli").stdout)["restored"] == "cli"
+    assert slmp_sim.get("D30") == 7
+    refused = cli("restore", "nope")
+    assert refused.returncode == 1
+    assert "no snapshot 'nope'" in refused.stderr
