@@ -304,7 +304,7 @@ TEST_CASE("wait: answers when an SLMP write lands, 408 with the last value at th
           "timeout_ms, as");
 }
 
-TEST_CASE("--check-config: 0 for a good file, 2 with the one-line error for a bad one", "[ci][cli]") {
+TEST_CASE("check-config: exit 0 for a good file, 2 with the one-line error for a bad one", "[ci][cli]") {
     TempDir dir;
     auto good = dir.write("good.json", kConfig);
     auto r = run_sim({"--check-config", good.string()});
