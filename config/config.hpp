@@ -136,6 +136,8 @@ struct ServerConfig {
     std::string record_file;               // --record: every request and response as JSON lines
     std::string record_pcap_file;          // --record-pcap: the same as a pcap capture for Wireshark
     double clock_speed = 1;                // the CPU's clock runs this many times faster than the host's
+    bool clock_frozen = false;             // --clock frozen: no scan until POST /api/clock/step or PUT /api/clock
+    std::string snapshot_file;             // --snapshot: start from a station snapshot saved to a file (docs/ci.md)
 };
 inline constexpr double kMinClockSpeed = 0.01, kMaxClockSpeed = 1000;
 inline constexpr const char* kClockSpeedFix = "use a factor from 0.01 to 1000 (default 1: real time)";

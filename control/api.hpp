@@ -4,14 +4,17 @@
 
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "control/router.hpp"
 #include "station/station.hpp"
+#include "station/station_snapshot.hpp"
 
 namespace slmp::control {
 
+class DeviceWaits;
 class EventHub;
 class Metrics;
 
@@ -27,11 +30,16 @@ struct Api {
     station::Station& station;
     EventHub& events;
     Metrics& metrics;
+    DeviceWaits& waits;
     PortList ports;
     std::chrono::system_clock::time_point started;
+    std::map<std::string, station::StationSnapshot> snapshots{};   // POST /api/snapshots, by name
 };
 
 void add_device_endpoints(Router& router, Api& api);       // /api/devices/{address}
+void add_wait_endpoints(Router& router, Api& api);         // /api/devices/{address}/wait
+void add_snapshot_endpoints(Router& router, Api& api);     // /api/snapshots[/{name}[/restore|/file]], /api/reset
+void add_clock_endpoints(Router& router, Api& api);        // /api/clock[/step]
 void add_buffer_endpoints(Router& router, Api& api);       // /api/buffer[/{module}/{address}]
 void add_scenario_endpoints(Router& router, Api& api);     // /api/scenarios[/{name}]
 void add_fault_endpoints(Router& router, Api& api);        // /api/faults[/{name}]

@@ -64,7 +64,7 @@ void EventHub::close_all() {
 void EventHub::update_listening() {
     listening_ = 0;
     for (const auto& s : subscribers_) listening_ |= s->types;
-    station_.cpu().memory().set_write_observer(wanted(kDeviceEvents) ? this : nullptr);
+    station_.cpu().memory().set_write_observer(wanted(kDeviceEvents) || change_listener_ ? this : nullptr);
     if (!wanted(kDeviceEvents)) pending_.clear();
 }
 
@@ -86,7 +86,14 @@ void EventHub::publish(unsigned type, std::string_view name, const json& data) {
     }
 }
 
+void EventHub::set_change_listener(std::function<void()> listener) {
+    change_listener_ = std::move(listener);
+    update_listening();
+}
+
 void EventHub::written(const devicemodel::DeviceSpec& spec, std::uint32_t first, std::uint32_t count) {
+    if (change_listener_) change_listener_();
+    if (!wanted(kDeviceEvents)) return;
     if (!pending_.empty()) {
         auto& last = pending_.back();
         // Consecutive or repeated devices of the same kind extend the last run.

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -60,6 +61,11 @@ public:
     // for an SLMP request, its peer and connection).
     void flush_writes(std::string_view source, const protocol::Peer* peer = nullptr, std::uint64_t connection = 0);
 
+    // Device waits (control/device_waits.hpp) hear of every change as well:
+    // while one is pending the write observer stays attached. `listener` is
+    // told once per change; nullptr detaches it.
+    void set_change_listener(std::function<void()> listener);
+
     void on_request_starting() override { flush_writes("internal"); }
     void on_request(const station::RequestRecord& record) override;
     void on_opened(const station::Connection& connection) override;
@@ -83,6 +89,7 @@ private:
     std::vector<Run> pending_;
     boost::asio::steady_timer internal_flush_;
     bool flush_armed_ = false;
+    std::function<void()> change_listener_;
 };
 
 }  // namespace slmp::control

@@ -36,7 +36,8 @@ HttpServer::HttpServer(asio::io_context& io, station::Station& station, const co
     : io_(io),
       metrics_(station),
       events_(io, station),
-      api_{station, events_, metrics_, std::move(ports), std::chrono::system_clock::now()},
+      waits_(io, events_),
+      api_{station, events_, metrics_, waits_, std::move(ports), std::chrono::system_clock::now()},
       acceptor_(io) {
     tcp::endpoint endpoint(bind, config.port);
     try {
@@ -53,6 +54,9 @@ HttpServer::HttpServer(asio::io_context& io, station::Station& station, const co
     api_.ports.http = port_;
 
     add_device_endpoints(router_, api_);
+    add_wait_endpoints(router_, api_);
+    add_snapshot_endpoints(router_, api_);
+    add_clock_endpoints(router_, api_);
     add_buffer_endpoints(router_, api_);
     add_scenario_endpoints(router_, api_);
     add_fault_endpoints(router_, api_);
@@ -70,6 +74,7 @@ HttpServer::HttpServer(asio::io_context& io, station::Station& station, const co
 void HttpServer::stop() {
     boost::system::error_code ec;
     acceptor_.close(ec);
+    waits_.close_all();
     events_.close_all();
     for (auto* socket : sockets_) socket->close(ec);
 }
@@ -128,6 +133,11 @@ asio::awaitable<void> HttpServer::serve(tcp::socket socket) {
                           static_cast<unsigned>(reply.status));
         }
 
+        if (reply.deferred) {
+            stream.expires_never();   // a wait has its own timeout
+            auto later = std::move(reply.deferred);
+            reply = co_await later();
+        }
         if (reply.event_types != 0) {
             stream.expires_never();
             co_await stream_events(stream.socket(), events_, reply.event_types);

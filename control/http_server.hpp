@@ -11,6 +11,7 @@
 
 #include "config/config.hpp"
 #include "control/api.hpp"
+#include "control/device_waits.hpp"
 #include "control/event_hub.hpp"
 #include "control/metrics.hpp"
 #include "control/router.hpp"
@@ -35,6 +36,7 @@ private:
     boost::asio::io_context& io_;
     Metrics metrics_;
     EventHub events_;
+    DeviceWaits waits_;
     Api api_;
     Router router_;
     boost::asio::ip::tcp::acceptor acceptor_;

@@ -2,10 +2,12 @@
 // JSON {"error": "..."} whose message names the fix (docs/api.md).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include <boost/asio/awaitable.hpp>
 #include <boost/beast/http/status.hpp>
 #include <nlohmann/json.hpp>
 
@@ -19,6 +21,9 @@ struct Reply {
     std::string body;
     std::vector<std::pair<std::string, std::string>> headers;   // extra header fields (Allow, ...)
     unsigned event_types = 0;    // non-zero (GET /api/events): the connection becomes an event stream of these types
+    // Set (GET .../wait): the answer comes later; the connection awaits it
+    // while the server goes on serving every other connection.
+    std::function<boost::asio::awaitable<Reply>()> deferred;
 };
 
 Reply json_reply(const nlohmann::json& body, Status status = Status::ok);

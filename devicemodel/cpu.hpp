@@ -39,9 +39,12 @@ public:
     // Link devices (X Y B SB W SW) of the network module on network `number` (J□\...).
     DeviceMemory* network(std::uint16_t number);
     void add_network(std::uint16_t number, const DeviceSizes& sizes);
+    const std::map<std::uint16_t, std::unique_ptr<DeviceMemory>>& networks() const { return networks_; }
     // What Memory Read/Write 0613/1613 reach: the CPU buffer memory (area G of
     // this CPU) unless the profile gives the port a buffer memory of its own.
     DeviceMemory& station_buffer() { return station_buffer_ ? *station_buffer_ : memory_; }
+    // The port's own buffer memory; null when 0613/1613 reach the CPU buffer.
+    DeviceMemory* own_station_buffer() { return station_buffer_.get(); }
 
     // Operating state, scan cycle, timers, special registers, remote password
     // (devicemodel/runtime.hpp); its operations take memory() explicitly.

@@ -59,6 +59,44 @@ void DeviceMemory::set_bit(const DeviceSpec& spec, std::uint32_t number, bool on
     plane[number] = now;
 }
 
+void DeviceMemory::read_part(const DeviceSpec& spec, std::span<std::uint32_t> out) const {
+    const auto& s = store(spec.area);
+    if (spec.unit == Unit::Bit) {
+        const auto& plane = spec.part == Part::Coil ? s.coils : s.bits;
+        const auto n = std::min(out.size(), plane.size());
+        for (std::size_t i = 0; i < n; ++i) out[i] = plane[i] != 0 ? 1 : 0;
+        std::fill(out.begin() + static_cast<std::ptrdiff_t>(n), out.end(), 0);
+        return;
+    }
+    const auto n = std::min(out.size(), s.values.size());
+    const std::uint32_t mask = spec.unit == Unit::Word ? 0xFFFF : 0xFFFFFFFF;
+    for (std::size_t i = 0; i < n; ++i) out[i] = s.values[i] & mask;
+    std::fill(out.begin() + static_cast<std::ptrdiff_t>(n), out.end(), 0);
+}
+
+void DeviceMemory::write_part(const DeviceSpec& spec, std::span<const std::uint32_t> in) {
+    auto& s = store(spec.area);
+    if (spec.unit == Unit::Bit) {
+        auto& plane = spec.part == Part::Coil ? s.coils : s.bits;
+        const auto n = std::min(in.size(), plane.size());
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint8_t now = in[i] != 0 ? 1 : 0;
+            if (plane[i] == now) continue;
+            if (observer_) observer_->written(spec, static_cast<std::uint32_t>(i), 1);
+            plane[i] = now;
+        }
+        return;
+    }
+    const auto n = std::min(in.size(), s.values.size());
+    const std::uint32_t mask = spec.unit == Unit::Word ? 0xFFFF : 0xFFFFFFFF;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto now = in[i] & mask;
+        if (s.values[i] == now) continue;
+        if (observer_) observer_->written(spec, static_cast<std::uint32_t>(i), 1);
+        s.values[i] = now;
+    }
+}
+
 std::uint32_t DeviceMemory::value(const DeviceSpec& spec, std::uint32_t number) const {
     if (spec.unit == Unit::Bit) return bit(spec, number) ? 1 : 0;
     const auto& values = store(spec.area).values;

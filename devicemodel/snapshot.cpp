@@ -18,7 +18,10 @@ std::uint64_t fnv1a(std::span<const std::uint8_t> bytes) {
     return h;
 }
 
-bool saved(Area area) { return area != Area::SM && area != Area::SD && area != Area::R; }   // R lives in ZR
+bool saved(Area area, SnapshotContents contents) {
+    if (area == Area::R) return false;   // R lives in ZR
+    return contents == SnapshotContents::WithSystem || (area != Area::SM && area != Area::SD);
+}
 
 class Writer {
 public:
@@ -108,14 +111,15 @@ struct SavedArea {
 
 }  // namespace
 
-std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::string_view profile_name) {
+std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::string_view profile_name,
+                                          SnapshotContents contents) {
     Writer w;
     w.out.insert(w.out.end(), std::begin(kMagic), std::end(kMagic));
     w.u32(kVersion);
     w.name(profile_name);
     std::vector<Area> areas;
     for (std::size_t i = 0; i < static_cast<std::size_t>(Area::Count); ++i)
-        if (saved(static_cast<Area>(i))) areas.push_back(static_cast<Area>(i));
+        if (saved(static_cast<Area>(i), contents)) areas.push_back(static_cast<Area>(i));
     w.u32(static_cast<std::uint32_t>(areas.size()));
     for (auto area : areas) {
         auto size = area == Area::ZR ? std::max(memory.size(Area::ZR), memory.size(Area::R)) : memory.size(area);
@@ -126,7 +130,7 @@ std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::strin
         for (const auto* part : parts) {
             w.u8(static_cast<std::uint8_t>(part->part));
             std::vector<std::uint32_t> values(size);
-            for (std::uint32_t n = 0; n < size; ++n) values[n] = memory.value(*part, n);
+            memory.read_part(*part, values);
             write_values(w, values);
         }
     }
@@ -189,9 +193,14 @@ RestoreResult restore_snapshot(std::span<const std::uint8_t> bytes, DeviceMemory
             result.warnings.push_back(std::string(area_name(a.area)) + " was saved with " + std::to_string(a.size) +
                                       " points and is now " + std::to_string(size) + "; the common part was restored");
         auto n_max = std::min(size, a.size);
-        for (const auto& part : a.parts)
+        for (const auto& part : a.parts) {
+            if (scope == RestoreScope::All) {
+                memory.write_part(*part.spec, std::span(part.values).first(n_max));
+                continue;
+            }
             for (std::uint32_t n = 0; n < n_max; ++n)
-                if (scope == RestoreScope::All || latch.latched(a.area, n)) memory.set_value(*part.spec, n, part.values[n]);
+                if (latch.latched(a.area, n)) memory.set_value(*part.spec, n, part.values[n]);
+        }
     }
     result.ok = true;
     return result;

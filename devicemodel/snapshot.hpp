@@ -1,6 +1,6 @@
 // Device memory as bytes, for the state directory (the file handling is the
 // server's). A snapshot holds every stored device except SM/SD (the system
-// rebuilds those) and ends with a checksum, so a damaged file is recognised
+// rebuilds those; SnapshotContents::WithSystem keeps them too) and ends with a checksum, so a damaged file is recognised
 // and refused rather than half-loaded. Remote-operation state is not saved: a
 // power cycle erases it on the real CPU (slmp-labels-remote-misc.md §5.1).
 //
@@ -22,7 +22,13 @@
 
 namespace slmp::devicemodel {
 
-std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::string_view profile_name);
+// What a snapshot holds: the state directory saves program memory only (the
+// system rebuilds SM/SD at power-on); a station snapshot taken over the HTTP
+// API (station/station_snapshot.hpp) puts the CPU back as it was, SM/SD too.
+enum class SnapshotContents : std::uint8_t { Devices, WithSystem };
+
+std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::string_view profile_name,
+                                          SnapshotContents contents = SnapshotContents::Devices);
 
 enum class RestoreScope : std::uint8_t {
     Latched,   // like a power cycle: only latched devices (L, R/ZR, latch ranges) come back

@@ -56,6 +56,21 @@ bool RunnerSet::remove(const std::string& name, devicemodel::Cpu& cpu, EventSink
     return true;
 }
 
+std::vector<std::vector<Scenario>> RunnerSet::groups() const {
+    std::vector<std::vector<Scenario>> list;
+    for (const auto& r : runners_) list.push_back(r->scenarios());
+    return list;
+}
+
+void RunnerSet::clear(Station* station) {
+    for (const auto& r : runners_) {
+        if (station && !r->powered()) station->power_on();
+        if (station && r->refusing()) station->refuse_connections(false);
+    }
+    runners_.clear();
+    consulted_.clear();
+}
+
 void RunnerSet::scan(TimePoint now) {
     for (auto& r : runners_) r->scan(now);
 }

@@ -34,6 +34,10 @@ public:
     bool remove(const std::string& name, devicemodel::Cpu& cpu, EventSink log, Station* station);
 
     bool empty() const { return runners_.empty(); }
+    // What each runner runs, in load order (a station snapshot keeps this).
+    std::vector<std::vector<Scenario>> groups() const;
+    // Stops every runner; what they did to the station (power cut, refusal) ends.
+    void clear(Station* station);
     void scan(TimePoint now);
     Plan before(const Incoming& incoming, std::span<const std::uint8_t> input);
     void after(Plan& plan, const protocol::Outcome& outcome, std::vector<std::uint8_t>& response);

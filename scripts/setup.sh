@@ -7,6 +7,7 @@ cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build ccache libboost-dev libboost-program-options-dev
           nlohmann-json3-dev libspdlog-dev catch2 python3-jsonschema
+          python3-pytest python3-yaml   # the Python CI kit's suite and the CI examples' check (docs/ci.md)
           chromium    # the web monitor's browser test (tests/browser)
           tshark      # the Wireshark dissector's test (tests/wireshark)
           clang libclang-rt-14-dev)   # the sanitizer build and fuzzers (scripts/test-sanitizers.sh)

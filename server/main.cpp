@@ -5,6 +5,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "server/check_config.hpp"
 #include "server/options.hpp"
 #include "server/server.hpp"
 
@@ -25,6 +26,11 @@ int main(int argc, char** argv) {
         auto cl = slmp::server::parse_command_line(argc, argv);
         if (cl.exit_now) return 0;
         spdlog::set_level(log_level(cl.config.log_level));
+        if (cl.check_only) {
+            slmp::server::check_configuration(cl.config);
+            std::cout << "slmp-sim: configuration OK\n";
+            return 0;
+        }
         spdlog::set_pattern("%Y-%m-%d %H:%M:%S.%e %^%-5l%$ %v");
         slmp::server::Server server(cl.config);
         server.run();

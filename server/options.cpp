@@ -57,6 +57,9 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("scenario", po::value<std::vector<std::string>>(), "run a scenario file (values that move, logic, faults, replay); repeatable (docs/scenarios.md)")
         ("record", po::value<std::string>(), "record every request and response to this JSON-lines file (docs/scenarios.md)")
         ("clock-speed", po::value<double>(), "run the CPU's clock (scan, timers, scenarios) this many times faster than real time (default 1)")
+        ("clock", po::value<std::string>(), "realtime (default) or frozen: no scan until POST /api/clock/step or PUT /api/clock (docs/ci.md)")
+        ("snapshot", po::value<std::string>(), "start from a station snapshot file saved from GET /api/snapshots/{name}/file (docs/ci.md)")
+        ("check-config", po::value<std::string>(), "check this configuration file (and the profile, scenarios and snapshot it names) and exit: 0 good, 2 with the error")
         ("record-pcap", po::value<std::string>(), "capture every request and response to this pcap file for Wireshark (docs/scenarios.md)");
 
     po::variables_map vm;
@@ -92,6 +95,11 @@ CommandLine parse_command_line(int argc, char** argv) {
     }
 
     auto& c = cl.config;
+    if (vm.count("check-config")) {
+        if (vm.count("config")) throw ConfigError("--check-config FILE checks FILE; leave --config out");
+        cl.check_only = true;
+        c = config::load_server_config(vm["check-config"].as<std::string>());
+    }
     if (vm.count("config")) c = config::load_server_config(vm["config"].as<std::string>());
     if (vm.count("profile")) c.profile = vm["profile"].as<std::string>();
     if (vm.count("bind")) c.bind = vm["bind"].as<std::string>();
@@ -156,6 +164,13 @@ CommandLine parse_command_line(int argc, char** argv) {
         if (!(c.clock_speed >= config::kMinClockSpeed && c.clock_speed <= config::kMaxClockSpeed))
             throw ConfigError(fmt::format("--clock-speed {}: out of range; {}", c.clock_speed, config::kClockSpeedFix));
     }
+    if (vm.count("clock")) {
+        auto mode = vm["clock"].as<std::string>();
+        if (mode != "realtime" && mode != "frozen")
+            throw ConfigError("--clock " + mode + ": use realtime or frozen");
+        c.clock_frozen = mode == "frozen";
+    }
+    if (vm.count("snapshot")) c.snapshot_file = vm["snapshot"].as<std::string>();
     if (c.ports.empty()) throw ConfigError("no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
     return cl;
 }

@@ -12,6 +12,7 @@ namespace slmp::server {
 struct CommandLine {
     config::ServerConfig config;
     bool exit_now = false;      // --help, --version, --list-profiles: printed already
+    bool check_only = false;    // --check-config: check the configuration, start nothing
 };
 
 // Parses argv. Throws config::ConfigError with a one-line message that names

@@ -1,6 +1,8 @@
 // The scan cycle on the io_context: a steady_timer fires every scan time and
-// runs one scan of each CPU. Requests are handled on the same thread, so a
-// request is applied whole between two scans (the real CPU's END processing).
+// runs one scan of each CPU at the virtual clock's time. Requests are handled
+// on the same thread, so a request is applied whole between two scans (the
+// real CPU's END processing). While the clock is frozen no scan runs on its
+// own; step() runs scans at once, each moving the clock by one scan time.
 #pragma once
 
 #include <chrono>
@@ -10,6 +12,7 @@
 #include "station/asio.hpp"
 
 #include "devicemodel/cpu.hpp"
+#include "station/virtual_clock.hpp"
 
 namespace slmp::station {
 
@@ -21,20 +24,33 @@ public:
     // `speed` > 1 runs the CPU's clock faster than the host's (scans still come
     // every `period` of real time, each covering period × speed of CPU time).
     ScanLoop(boost::asio::io_context& io, std::vector<devicemodel::Cpu*> cpus, std::chrono::milliseconds period,
-             double speed = 1);
+             double speed = 1, bool frozen = false);
 
     void start();
     void stop();
     // Called after every scan with the scan's time (the scenarios' clock).
     void after_scan(std::function<void(std::chrono::steady_clock::time_point)> callback) { after_scan_ = std::move(callback); }
 
+    const VirtualClock& clock() const { return clock_; }
+    std::chrono::milliseconds period() const { return period_; }
+    void run_clock(double speed);
+    void freeze_clock();
+    // Frozen only: `scans` scans, each one scan time later than the last.
+    void step_scans(std::uint64_t scans);
+    // Frozen only: scans of one scan time until `by` has passed, the last one
+    // shorter when `by` is not a whole number of scan times.
+    void step_time(std::chrono::microseconds by);
+    // A restored snapshot's CPU time (the mode stays).
+    void set_time(VirtualClock::TimePoint cpu_time) { clock_.set(cpu_time); }
+
 private:
     boost::asio::awaitable<void> run();
+    void scan_once();
 
     boost::asio::steady_timer timer_;
     std::vector<devicemodel::Cpu*> cpus_;
     std::chrono::milliseconds period_;
-    double speed_;
+    VirtualClock clock_;
     bool stopped_ = false;
     std::function<void(std::chrono::steady_clock::time_point)> after_scan_;
 };

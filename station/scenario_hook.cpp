@@ -61,6 +61,12 @@ void ScenarioHook::load(scenarios::Scenario s) {
     if (initial.error) cpu_->runtime().raise_error(cpu_->memory(), *initial.error);
 }
 
+void ScenarioHook::replace_scenarios(std::vector<std::vector<scenarios::Scenario>> groups) {
+    runners_.clear(station_);
+    if (!cpu_) return;
+    for (auto& group : groups) runners_.add(std::move(group), *cpu_, log_event, station_);
+}
+
 bool ScenarioHook::stop(const std::string& name) {
     if (!cpu_ || !runners_.remove(name, *cpu_, log_event, station_)) return false;
     spdlog::info("scenario '{}' stopped", name);

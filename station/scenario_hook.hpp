@@ -49,6 +49,11 @@ public:
     // Stops every scenario called `name`; false when none is.
     bool stop(const std::string& name);
     std::vector<scenarios::RunnerSet::Running> scenarios() const { return runners_.running(); }
+    // Every running scenario by runner, and putting such a list back: what
+    // runs now stops, the list starts afresh (clocks from 0, faults as loaded,
+    // no initial state applied). For station snapshots (station_snapshot.cpp).
+    std::vector<std::vector<scenarios::Scenario>> scenario_groups() const { return runners_.groups(); }
+    void replace_scenarios(std::vector<std::vector<scenarios::Scenario>> groups);
     // By the name fault_stats() gives; false when there is no such fault.
     bool enable_fault(const std::string& name, bool on) { return runners_.enable_fault(name, on); }
 

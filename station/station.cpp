@@ -8,6 +8,7 @@
 #include "station/persistence.hpp"
 #include "station/scan_loop.hpp"
 #include "station/scenario_station.hpp"
+#include "station/station_snapshot.hpp"
 
 namespace slmp::station {
 
@@ -36,6 +37,7 @@ Station::~Station() = default;
 void Station::connect(Transports& transports) {
     transports_ = &transports;
     start_scenarios(std::move(pending_scenarios_));
+    take_initial_snapshot();
 }
 
 void Station::start_cpu_runtime(boost::asio::io_context& io) {
@@ -43,9 +45,8 @@ void Station::start_cpu_runtime(boost::asio::io_context& io) {
     // Device clears (Remote RUN clear modes, latch clear, reset) re-apply the
     // configured initial values, as the CPU's "device initial value" parameter does.
     cpu_.runtime().set_initial_values([this](devicemodel::DeviceMemory&) { config::apply_initial_values(cpu_, config_.devices); });
-    std::vector<devicemodel::Cpu*> cpus{&cpu_};
-    for (auto& other : other_cpus_) cpus.push_back(other.get());
-    scan_ = std::make_unique<ScanLoop>(io, std::move(cpus), cpu_.runtime().config().scan_time, config_.clock_speed);
+    scan_ = std::make_unique<ScanLoop>(io, all_cpus(), cpu_.runtime().config().scan_time, config_.clock_speed,
+                                       config_.clock_frozen);
     if (!config_.persistence.state_dir.empty()) {
         persistence_ = std::make_unique<Persistence>(io, cpu_, config_.persistence);
         persistence_->restore();

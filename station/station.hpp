@@ -26,6 +26,7 @@ namespace slmp::station {
 class Persistence;
 class ScanLoop;
 class ScenarioStation;
+struct StationSnapshot;
 
 class Station {
 public:
@@ -66,6 +67,18 @@ public:
     bool has_state_directory() const { return persistence_ != nullptr; }
     bool save_snapshot(std::string_view why);
 
+    // The whole station now, and back to it (station/station_snapshot.hpp).
+    // restore() throws config::ConfigError for a snapshot of another
+    // configuration. Connections stay open unless `drop_connections`.
+    StationSnapshot snapshot();
+    void restore(const StationSnapshot& snapshot, bool drop_connections);
+    // Back to the state connect() started in: the configuration's initial
+    // values and the --scenario files, before --snapshot was applied.
+    void reset(bool drop_connections);
+
+    // The scan cycle and its virtual clock (station/scan_loop.hpp); null in a bare station.
+    ScanLoop* scan_loop() { return scan_.get(); }
+
     devicemodel::Cpu& cpu() { return cpu_; }
     const devicemodel::Cpu& cpu() const { return cpu_; }
     protocol::Engine& engine() { return engine_; }
@@ -78,6 +91,8 @@ private:
     void start_cpu_runtime(boost::asio::io_context& io);          // "cpu" parameters, scan cycle, state directory
     std::vector<scenarios::Scenario> load_scenarios();            // station_scenarios.cpp
     void start_scenarios(std::vector<scenarios::Scenario> list);
+    void take_initial_snapshot();                                 // station_snapshot.cpp; applies --snapshot
+    std::vector<devicemodel::Cpu*> all_cpus();
 
     config::ServerConfig config_;   // with the scenarios' initial state joined
     devicemodel::Cpu cpu_;
@@ -91,6 +106,7 @@ private:
     std::vector<scenarios::Scenario> pending_scenarios_;   // loaded, started by connect()
     Transports* transports_ = nullptr;                   // connect()
     std::unique_ptr<ScenarioStation> scenario_station_;  // null without scenarios
+    std::unique_ptr<StationSnapshot> initial_;           // what reset() returns to (connect())
 };
 
 }  // namespace slmp::station

@@ -36,6 +36,7 @@
 
 #include "config/config.hpp"
 #include "control/api.hpp"
+#include "control/device_waits.hpp"
 #include "control/event_hub.hpp"
 #include "control/metrics.hpp"
 #include "control/router.hpp"
@@ -86,8 +87,8 @@ using Watch = fuzz::WriteWatch;
 // What the HTTP server builds around a station (http_server.cpp), plus an
 // intelligent module (buffer U3) for /api/buffer.
 struct Rig {
-    Rig() : station(profile(), {}), metrics(station), events(io, station),
-            api{station, events, metrics, {"127.0.0.1", {5000}, {5000}, 8080}, {}} {
+    Rig() : station(profile(), {}), metrics(station), events(io, station), waits(io, events),
+            api{station, events, metrics, waits, {"127.0.0.1", {5000}, {5000}, 8080}, {}} {
         station.cpu().add_module(3, "Q62DA", 512, 0x1008);
         // What Station::connect() does when the HTTP API is on, so POST /api/scenarios can load.
         station.scenario().attach(station.cpu(), no_transports);
@@ -121,6 +122,8 @@ struct Rig {
     station::Station station;
     control::Metrics metrics;
     control::EventHub events;
+    // Not routed here: a wait's answer is deferred, which this harness does not await.
+    control::DeviceWaits waits;
     control::Api api;
     control::Router router;
 };
