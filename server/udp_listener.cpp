@@ -16,7 +16,9 @@ UdpListener::UdpListener(asio::io_context& io, station::Station& station, const 
                          const asio::ip::address& bind)
     : station_(station), policy_(to_policy(port.data_code)), socket_(io, udp::endpoint(bind, port.port)) {
     port_ = socket_.local_endpoint().port();
+    own_ = port.numbers;
     session_.id = station_.next_session_id();
+    session_.own = own_;
     asio::co_spawn(io, serve(), station::log_exception("UDP port " + std::to_string(port_) + ": receive loop failed"));
 }
 
@@ -53,6 +55,7 @@ asio::awaitable<void> UdpListener::serve() {
 void UdpListener::restart_session() {
     session_ = protocol::Session{};
     session_.id = station_.next_session_id();
+    session_.own = own_;
 }
 
 void UdpListener::stop() {

@@ -30,6 +30,7 @@ private:
     protocol::DataCodePolicy policy_;
     boost::asio::ip::udp::socket socket_;
     protocol::Session session_;
+    protocol::StationNumbers own_;   // the port's network/station numbers, kept across a restart
     std::uint16_t port_ = 0;
 };
 
