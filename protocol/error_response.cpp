@@ -1,12 +1,15 @@
 #include "protocol/error_response.hpp"
 
 #include "protocol/fields.hpp"
+#include "protocol/frame_1e.hpp"
 #include "protocol/message.hpp"
 
 namespace slmp::protocol {
 
 std::vector<std::uint8_t> encode_error_response(const FrameHeader& request, std::uint16_t command,
                                                 std::uint16_t subcommand, EndCode code) {
+    // A 1E error is its one-byte end code (scenarios force codes through here too).
+    if (request.kind == FrameKind::E1) return encode_error_1e(request, code);
     FieldWriter w(request.codec);
     w.u16(raw(code));
     if (request.kind == FrameKind::Ext) {

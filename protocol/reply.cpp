@@ -31,9 +31,7 @@ Outcome Reply::error(EndCode code, std::string note) {
     outcome_.end_code = code;
     outcome_.note = hex4(raw(code)) + " (" + std::string(describe(code)) + "): " + note;
     outcome_.action = Outcome::Action::Respond;
-    outcome_.response = header_.kind == FrameKind::E1
-                            ? encode_error_1e(header_, code)
-                            : encode_error_response(header_, outcome_.command, outcome_.subcommand, code);
+    outcome_.response = encode_error_response(header_, outcome_.command, outcome_.subcommand, code);
     return std::move(outcome_);
 }
 
