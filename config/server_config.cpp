@@ -35,7 +35,11 @@ PortConfig port(const JsonAt& at) {
     if (at.has("network") || at.has("station")) {
         auto network = at.has("network") ? static_cast<unsigned>(at["network"].unsigned_int(255)) : 0u;
         auto station = at.has("station") ? static_cast<unsigned>(at["station"].unsigned_int(255)) : 0u;
-        p.numbers = checked_station_numbers(network, station, at.pointer());
+        try {
+            p.numbers = checked_station_numbers(network, station, "network/station");
+        } catch (const ConfigError& e) {
+            at.fail(e.what(), "give both, network 1-239 and station 1-120");
+        }
     }
     return p;
 }

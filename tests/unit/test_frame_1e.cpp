@@ -79,15 +79,15 @@ TEST_CASE("1E test (random write), monitor, loopback, PC type, remote RUN/STOP",
     auto cpu = make_cpu(kProfile);
     SECTION("05 test word units: D10 = 1111, W5 = 2222") {
         check_both(cpu, {"05 FF 0A 00 02 00 0A 00 00 00 20 44 11 11 05 00 00 00 20 57 22 22", "85 00",
-                         "05FF000A0200442000000000A11115720000000052222", "8500"});
+                         "05FF000A0200" "44200000000A1111" "5720000000052222", "8500"});
         CHECK(get(cpu, "D10") == 0x1111);
         CHECK(get(cpu, "W5") == 0x2222);
     }
     SECTION("04 test bit units: M5 on, X1F on, then off in ASCII") {
         CHECK(hex(run(cpu, bytes("04 FF 0A 00 02 00 05 00 00 00 20 4D 01 1F 00 00 00 20 58 01")).response) == "84 00");
         CHECK((get(cpu, "M5") == 1 && get(cpu, "X1F") == 1));
-        CHECK(str(run(cpu, text("04FF000A02004D2000000005005820000000 1F00")).response) != "8400");
-        CHECK(str(run(cpu, text("04FF000A02004D200000000500582000000001F00")).response) == "8400");
+        CHECK(str(run(cpu, text("04FF000A0200" "4D200000000500" "5820000000 1F00")).response) != "8400");
+        CHECK(str(run(cpu, text("04FF000A0200" "4D200000000500" "58200000001F00")).response) == "8400");
         CHECK((get(cpu, "M5") == 0 && get(cpu, "X1F") == 0));
     }
     SECTION("07 monitor registration then 09 monitor, per connection") {

@@ -35,11 +35,11 @@ TEST_CASE("station-number-extended frame: read D100-D102 (the §3.4 A vector in 
     SECTION("station 7C, extended station 0080 (128): another station -> 4A02 with the extended error information") {
         auto out = run(cpu, bytes("68 00 02 00 00 00 | 00 7C FF 03 00 | 00 80 00 | 12 00 | 10 00 | 01 04 00 00 | 00 | "
                                   "00 00 00 00 00 | 64 00 00 A8 01 00"));
-        CHECK(hex(out.response) == hex(bytes("E8 00 02 00 00 00 | 00 7C FF 03 00 | 00 80 00 | 15 00 | 02 4A | "
+        CHECK(hex(out.response) == hex(bytes("E8 00 02 00 00 00 | 00 7C FF 03 00 | 00 80 00 | 14 00 | 02 4A | "
                                              "01 04 00 00 00 00 00 00 00 00 | 00 7C FF 03 00 00 80 00")));
     }
     SECTION("a write through the extended frame, then a 3E read of it") {
-        auto out = run(cpu, bytes("68 00 03 00 00 00 | 00 FF FF 03 00 | 00 00 00 | 14 00 | 10 00 | 01 14 00 00 | 00 | "
+        auto out = run(cpu, bytes("68 00 03 00 00 00 | 00 FF FF 03 00 | 00 00 00 | 16 00 | 10 00 | 01 14 00 00 | 00 | "
                                   "00 00 00 00 00 | 00 00 00 A8 02 00 | 34 12 78 56"));
         CHECK(hex(out.response) == hex(bytes("E8 00 03 00 00 00 | 00 FF FF 03 00 | 00 00 00 | 0C 00 | 00 00 | "
                                              "01 14 00 00 00 00 00 00 00 00")));
