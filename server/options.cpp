@@ -71,7 +71,7 @@ CommandLine parse_command_line(int argc, char** argv) {
 
     CommandLine cl;
     if (vm.count("help")) {
-        std::cout << "slmp-sim — a MELSEC CPU that answers SLMP (3E/4E, binary/ASCII) over TCP and UDP\n\n"
+        std::cout << "slmp-sim — a MELSEC CPU that answers SLMP (3E/4E, binary/ASCII; 1E and the station-number-extended frame where its profile has them) over TCP and UDP\n\n"
                   << "Usage: slmp-sim [options]\n\n" << options << "\n";
         cl.exit_now = true;
         return cl;
