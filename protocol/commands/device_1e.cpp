@@ -39,8 +39,11 @@ void decode_test_bits_1e(DecodeContext& d) {
     if (fixed != 0) fail(d, EndCode::LengthMismatch);
     if (over(d, d.port.random_write_bits, points)) fail(d, over_limit_code(d, d.port.random_write_bits));
     for (unsigned i = 0; i < points && d.in.ok(); ++i) {
-        DeviceOperand device{read_device(d, "bit access device"), DeviceOperand::Unit::Bit, 1};
-        device.bits = {static_cast<std::uint8_t>(d.in.u8("set/reset") != 0)};
+        DeviceOperand device;
+        device.field = read_device(d, "bit access device");
+        device.unit = DeviceOperand::Unit::Bit;
+        device.points = 1;
+        device.bits = {static_cast<std::uint8_t>(d.in.u8("set/reset") != 0)};   // any nonzero value sets
         if (d.in.ok()) d.out.devices.push_back(std::move(device));
     }
     if (!d.in.finish()) fail_field(d);
