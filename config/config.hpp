@@ -15,6 +15,7 @@
 #include "devicemodel/cpu_profile.hpp"
 #include "devicemodel/device_table.hpp"
 #include "devicemodel/runtime_config.hpp"
+#include "protocol/frame.hpp"
 #include "protocol/peer.hpp"
 #include "protocol/port_profile.hpp"
 
@@ -67,7 +68,12 @@ struct PortConfig {
     unsigned max_connections_per_address = 0;   // TCP: clients from one IP address at once; 0 = no limit
     bool remote_password = true;           // the CPU's remote password (if any) locks this port's connections
     std::optional<bool> online_change = std::nullopt;   // writes served in RUN; unset: the profile's default
+    // The station's network No. (1-239) and station No. (1-120) as set on the
+    // real module; 0/0 = not set: only 00/FF addresses the own station.
+    protocol::StationNumbers numbers{};
 };
+// Checks a network/station pair (both set or neither, in range); `where` names the key or option.
+protocol::StationNumbers checked_station_numbers(unsigned network, unsigned station, const std::string& where);
 
 struct InitialValue {
     devicemodel::DeviceAddress address;

@@ -85,7 +85,8 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
     root.only_keys({"name", "description", "type_name", "model_code", "family", "frame_4e", "iqr_subcommands",
                     "unsupported_commands", "end_codes", "limits", "device_sizes", "start_only_range_check",
                     "read_only_devices", "size_registers", "zr_ascii_hex", "mixed_block_write",
-                    "station_buffer_words", "remote_password_length", "online_change"});
+                    "station_buffer_words", "remote_password_length", "online_change", "frame_1e",
+                    "station_extended_frame", "pipeline"});
     Profile profile;
     auto& p = profile.cpu;
     auto& port = profile.port;
@@ -97,6 +98,23 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
     p.family = family(root["family"]);
     port.frame_4e = refusal(root["frame_4e"]);
     port.iqr_subcommands = refusal(root["iqr_subcommands"]);
+    if (root.has("frame_1e")) {   // {"pc_type": "41"}: the port serves 1E and answers 15 with this byte
+        auto e1 = root["frame_1e"];
+        e1.only_keys({"pc_type"});
+        auto code = e1["pc_type"].hex_code();
+        if (code > 0xFF) e1["pc_type"].fail("is not one byte", "write it like \"0041\" (00-FF)");
+        port.frame_1e = true;
+        port.pc_type_1e = static_cast<std::uint8_t>(code);
+    }
+    if (root.has("station_extended_frame")) port.station_extended_frame = root["station_extended_frame"].boolean();
+    if (root.has("pipeline")) {   // {"buffer": 32, "over_limit": "CEE0"}: 1 + buffer ÷ connections (spec §2.3)
+        auto pipeline = root["pipeline"];
+        pipeline.only_keys({"buffer", "over_limit"});
+        port.pipeline_buffer = static_cast<std::uint32_t>(pipeline["buffer"].unsigned_int(65535));
+        if (pipeline.has("over_limit")) port.pipeline_over_limit = refusal(pipeline["over_limit"]);
+        if (port.pipeline_over_limit.kind == Refusal::Kind::Serve)
+            pipeline["over_limit"].fail("cannot be answer", "use an end code such as \"CEE0\", silence or close");
+    }
     // Which commands a port family serves is the command table's (families);
     // a profile may refuse more.
     if (root.has("unsupported_commands")) {

@@ -15,7 +15,8 @@ namespace {
 
 PortConfig port(const JsonAt& at) {
     at.only_keys({"transport", "port", "data_code", "max_connections", "idle_timeout_ms",
-                "partial_frame_timeout_ms", "max_connections_per_address", "remote_password", "online_change"});
+                "partial_frame_timeout_ms", "max_connections_per_address", "remote_password", "online_change",
+                "network", "station"});
     PortConfig p;
     auto transport = at["transport"].string();
     if (transport == "tcp") p.transport = Transport::Tcp;
@@ -34,6 +35,15 @@ PortConfig port(const JsonAt& at) {
         p.max_connections_per_address = static_cast<unsigned>(at["max_connections_per_address"].unsigned_int(4096));
     if (at.has("remote_password")) p.remote_password = at["remote_password"].boolean();
     if (at.has("online_change")) p.online_change = at["online_change"].boolean();
+    if (at.has("network") || at.has("station")) {
+        auto network = at.has("network") ? static_cast<unsigned>(at["network"].unsigned_int(255)) : 0u;
+        auto station = at.has("station") ? static_cast<unsigned>(at["station"].unsigned_int(255)) : 0u;
+        try {
+            p.numbers = checked_station_numbers(network, station, "network/station");
+        } catch (const ConfigError& e) {
+            at.fail(e.what(), "give both, network 1-239 and station 1-120");
+        }
+    }
     return p;
 }
 
@@ -98,6 +108,17 @@ std::vector<InitialValue> parse_initial_values(const JsonAt& devices) {
     std::vector<InitialValue> list;
     for (const auto& [address, _] : devices.json().items()) list.push_back(initial_value(address, devices[address]));
     return list;
+}
+
+protocol::StationNumbers checked_station_numbers(unsigned network, unsigned station, const std::string& where) {
+    // §3.1.3: network No. 01-EF (1-239), station No. 01-78 (1-120).
+    if (network < 1 || network > 239)
+        throw ConfigError(where + ": network No. " + std::to_string(network) +
+                          " is out of range; set \"network\" (--network-no) to 1-239 together with the station No.");
+    if (station < 1 || station > 120)
+        throw ConfigError(where + ": station No. " + std::to_string(station) +
+                          " is out of range; set \"station\" (--station-no) to 1-120 together with the network No.");
+    return {static_cast<std::uint8_t>(network), static_cast<std::uint8_t>(station)};
 }
 
 bool valid_log_level(const std::string& level) {

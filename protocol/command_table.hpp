@@ -48,6 +48,7 @@ struct DecodeContext {
     const CommandSpec& spec;
     const PortProfile& port;
     Operands& out;
+    bool a_compatible = false;   // a 1E request: devices in the A-compatible layout
 };
 
 using Handler = EndCode (*)(CommandContext&);

@@ -1,4 +1,5 @@
-// decode: bytes -> Request. The frame (3E/4E, binary/ASCII), the monitoring
+// decode: bytes -> Request. The frame (3E/4E/station-number-extended, binary/ASCII;
+// 1E in decode_1e.cpp), the monitoring
 // timer, command and subcommand, the table's row, the CPU the access route
 // selects, and the row decoder's operands. Pure: nothing here reads or
 // changes device memory, so the scenario hook may look at the result and
@@ -9,12 +10,13 @@
 namespace slmp::protocol {
 namespace {
 
-// The own station (§3.1.3–§3.1.5): anything else would need routing, which a
-// CPU's built-in port cannot do. Module I/O 03FF is the connected CPU, 03E0–03E3
-// CPU No.1–4 of a multi-CPU system. The codes are chosen; see docs/end-codes.md.
-EndCode check_route(const Route& route, const CpuSet& cpus, std::size_t& target) {
-    if (route.network != 0x00) return EndCode::RouteNetworkNotFound;
-    if (route.station != 0xFF || route.multidrop != 0x00) return EndCode::RouteStationNotFound;
+// The own station (§3.1.3–§3.1.5): 00/FF, or the port's own network and
+// station numbers when they are set; anything else would need routing, which
+// a CPU's built-in port cannot do. Module I/O 03FF is the connected CPU,
+// 03E0–03E3 CPU No.1–4 of a multi-CPU system. The codes are chosen; see
+// docs/end-codes.md: another network 4A01, another station 4A02.
+// Module I/O 03FF is the connected CPU, 03E0–03E3 CPU No.1–4 (4B02 otherwise, chosen).
+EndCode check_module_io(const Route& route, const CpuSet& cpus, std::size_t& target) {
     if (route.module_io == 0x03FF) {
         target = 0;
         return EndCode::Ok;
@@ -22,6 +24,26 @@ EndCode check_route(const Route& route, const CpuSet& cpus, std::size_t& target)
     if (route.module_io < 0x03E0 || route.module_io > 0x03E3) return EndCode::RouteNotCpu;
     target = route.module_io - 0x03E0u;
     return cpus[target] ? EndCode::Ok : EndCode::RouteNotCpu;
+}
+
+EndCode check_route(const FrameHeader& header, StationNumbers own, const CpuSet& cpus, std::size_t& target) {
+    const auto& route = header.route;
+    // Station-number-extended frame (§3.1.6): station 7C defers to the extended
+    // station No., whose FFFF is the own station; otherwise that field is 0000.
+    if (header.kind == FrameKind::Ext) {
+        if (route.station == 0x7C) {
+            if (route.network != 0x00 && !(own.configured() && route.network == own.network))
+                return EndCode::RouteNetworkNotFound;
+            if (header.extended_station != 0xFFFF || route.multidrop != 0x00) return EndCode::RouteStationNotFound;
+            return check_module_io(route, cpus, target);
+        }
+        if (header.extended_station != 0x0000) return EndCode::RouteStationNotFound;
+    }
+    const bool by_numbers = own.configured() && route.network == own.network;
+    if (route.network != 0x00 && !by_numbers) return EndCode::RouteNetworkNotFound;
+    const bool own_station = by_numbers ? route.station == own.station : route.station == 0xFF;
+    if (!own_station || route.multidrop != 0x00) return EndCode::RouteStationNotFound;
+    return check_module_io(route, cpus, target);
 }
 
 Request::Frame frame_status(FrameScan::Status status) {
@@ -39,13 +61,19 @@ Request::Frame frame_status(FrameScan::Status status) {
 bool Request::reads_devices() const { return spec && spec->device_command() && !spec->writes(); }
 bool Request::writes_devices() const { return spec && spec->device_command() && spec->writes(); }
 
-Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy policy) const {
+Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy policy, StationNumbers own) const {
     Request request;
-    auto scan = scan_frame(input, Direction::Request, policy, options_.max_frame_bytes);
+    const auto& port = ports_[0];
+    auto scan = scan_frame(input, Direction::Request, policy, options_.max_frame_bytes,
+                           FrameSet{port.frame_1e, port.station_extended_frame});
     request.frame = frame_status(scan.status);
     request.size = scan.size;
     request.header = scan.header;
     if (!request.complete()) return request;
+    if (request.header.kind == FrameKind::E1) {
+        decode_1e(request, input, own);
+        return request;
+    }
 
     // After the header: monitoring timer, command, subcommand (2 bytes each).
     const auto& header = request.header;
@@ -59,9 +87,19 @@ Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy polic
         request.header_error_field = in.error_field();
         return request;
     }
+    if (header.kind == FrameKind::Ext) {
+        // Fixed 00 and the 5-byte system area (§3.1.9), always zero.
+        in.u8("fixed value 00");
+        in.raw(5, "system area");
+        if (!in.ok()) {
+            request.header_error = in.error();
+            request.header_error_field = in.error_field();
+            return request;
+        }
+    }
     request.has_command = true;
     request.data = body.subspan(body.size() - in.remaining());
-    request.route_error = check_route(header.route, cpus_, request.target);
+    request.route_error = check_route(header, own, cpus_, request.target);
     request.spec = find_command(request.command, request.subcommand);
     if (request.spec && request.spec->decode) {
         // The target CPU's limits apply; a request with a bad route is refused

@@ -43,6 +43,14 @@ struct Session {
         bool remote_password = true;   // the remote password guards this port
         bool online_change = true;     // writes are served while the CPU is in RUN
     } port;
+    // The port's own network and station numbers (set by the transport from
+    // the port's configuration); requests addressed to them are served.
+    StationNumbers own{};
+    // Commands per connection (spec §2.3), set by the transport before each
+    // request: how many requests of the same burst came before this one and
+    // are not answered yet, and how many connections the port has open.
+    std::size_t queued_ahead = 0;
+    std::size_t connections = 1;
 };
 
 // Whether the remote password guards this connection: the CPU has one and the
@@ -90,12 +98,13 @@ public:
     const CpuSet& cpus() const { return cpus_; }
 
     // Decodes the frame at the start of `input` (at most one); touches no memory.
-    Request decode(std::span<const std::uint8_t> input, DataCodePolicy policy) const;
+    // `own`: the port's network/station numbers, served like 00/FF.
+    Request decode(std::span<const std::uint8_t> input, DataCodePolicy policy, StationNumbers own = {}) const;
     // Serves a decoded request: the port's refusals, route, password, then the handler.
     Outcome execute(const Request& request, Session& session);
     // decode + execute.
     Outcome process(std::span<const std::uint8_t> input, DataCodePolicy policy, Session& session) {
-        return execute(decode(input, policy), session);
+        return execute(decode(input, policy, session.own), session);
     }
 
     devicemodel::Cpu& cpu() { return cpu_; }
@@ -103,6 +112,9 @@ public:
     const EngineOptions& options() const { return options_; }
 
 private:
+    // A 1E request after framing: its 1E row, route, 3E row and operands (decode_1e.cpp).
+    void decode_1e(Request& request, std::span<const std::uint8_t> input, StationNumbers own) const;
+
     devicemodel::Cpu& cpu_;
     CpuSet cpus_{};
     std::array<PortProfile, 4> ports_{};   // the port of each CPU in cpus_

@@ -8,6 +8,7 @@
 
 #include "protocol/command_table.hpp"
 #include "protocol/engine.hpp"
+#include "protocol/frame_1e.hpp"
 #include "protocol/hex.hpp"
 #include "protocol/reply.hpp"
 
@@ -51,7 +52,7 @@ Outcome bad_header(const Request& request, Reply& reply) {
 std::string route_note(const Route& route) {
     return "request for network " + hex_text(route.network, 2) + " station " + hex_text(route.station, 2) +
            " module I/O " + hex4(route.module_io) + " multidrop " + hex_text(route.multidrop, 2) +
-           "; only the own station (00/FF/03FF/00) and its configured CPUs (module I/O 03E0-03E3) are served";
+           "; only the own station (00/FF, or the port's own network/station numbers, module I/O 03FF, multidrop 00) and its configured CPUs (module I/O 03E0-03E3) are served";
 }
 
 // Remote password (slmp-labels-remote-misc.md §6): a locked connection gets
@@ -99,6 +100,19 @@ std::optional<Outcome> protection_refusal(const devicemodel::Cpu& cpu, const Por
     return std::nullopt;
 }
 
+// Commands per connection (spec §2.3): 1 + buffer ÷ connections requests fit
+// in the port's receive buffer, fractions truncated; one more is refused as
+// the profile says (CEE0 by default, docs/end-codes.md).
+std::optional<Outcome> over_pipeline_limit(const PortProfile& profile, const Session& session, Reply& reply) {
+    if (profile.pipeline_buffer == 0) return std::nullopt;
+    const auto limit = 1 + profile.pipeline_buffer / std::max<std::size_t>(session.connections, 1);
+    if (session.queued_ahead < limit) return std::nullopt;
+    return reply.refuse(profile.pipeline_over_limit,
+                        std::to_string(session.queued_ahead) + " request(s) of this burst are ahead in the receive buffer; " +
+                            "the port holds " + std::to_string(limit) + " per connection with " +
+                            std::to_string(session.connections) + " connection(s) open (commands per connection)");
+}
+
 }  // namespace
 
 bool password_guards(const devicemodel::Cpu& cpu, const Session& session) {
@@ -110,6 +124,7 @@ Outcome Engine::execute(const Request& request, Session& session) {
     const auto& cpu = cpu_.profile();
     const auto& profile = ports_[0];
     Reply reply(request);
+    if (auto over = over_pipeline_limit(profile, session, reply)) return std::move(*over);
     if (request.header.kind == FrameKind::E4 && profile.frame_4e.kind != Refusal::Kind::Serve)
         return reply.refuse(profile.frame_4e, "4E frame on a port of " + cpu.name + ", which serves 3E only");
     if (!request.has_command) return bad_header(request, reply);
@@ -117,7 +132,12 @@ Outcome Engine::execute(const Request& request, Session& session) {
     if (locked_out(cpu_, session, request.command))
         return reply.error(EndCode::RemotePasswordLocked,
                            "this connection is locked by the remote password; send Unlock 1630 with the password first");
-    if (auto refused = port_refusal(cpu, profile, request, reply)) return std::move(*refused);
+    // A 1E command with its own handler is served wherever 1E is: the family's
+    // 3E refusals (0101, 0619 on QnU/L) are about the 3E commands.
+    const auto* row_1e = request.header.kind == FrameKind::E1 ? find_command_1e(request.header.command_1e) : nullptr;
+    const bool own_1e_handler = row_1e && row_1e->handler;
+    if (!own_1e_handler)
+        if (auto refused = port_refusal(cpu, profile, request, reply)) return std::move(*refused);
 
     const auto* spec = request.spec;
     if (!spec)
@@ -136,7 +156,7 @@ Outcome Engine::execute(const Request& request, Session& session) {
     FieldWriter out(request.header.codec, CodecOptions{ports_[request.target].zr_ascii_hex});
     CommandContext ctx{target, ports_[request.target], cpus_, profile, request.header, *spec, request.operands,
                        session, in, out};
-    auto code = spec->handler(ctx);
+    auto code = own_1e_handler ? row_1e->handler(ctx) : spec->handler(ctx);
     if (code != EndCode::Ok) {
         auto field = code == request.operands.error ? request.operands.error_field : in.error_field();
         auto why = std::string(spec->name);
@@ -144,6 +164,11 @@ Outcome Engine::execute(const Request& request, Session& session) {
         return reply.error(code, why);
     }
     if (ctx.restarted) return reply.drop(Outcome::Action::Restart, "");   // §5.6: no response on success
+    // 1E bit data come in whole bytes: an odd count gets a dummy 0 point
+    // (binary packing already pads its last nibble).
+    if (row_1e && row_1e->bit_data && request.header.codec == Codec::Ascii && !request.operands.devices.empty() &&
+        request.operands.devices.front().points % 2 != 0)
+        out.bytes().push_back('0');
     return reply.ok(out.bytes());
 }
 

@@ -92,6 +92,25 @@ DeviceField FieldReader::device(DeviceForm form, std::string_view what) {
     return field;
 }
 
+DeviceField FieldReader::device_1e(std::string_view what) {
+    DeviceField field;
+    if (codec_ == Codec::Binary) {
+        field.number = number(4, what);
+        field.code = static_cast<std::uint16_t>(number(2, what));
+    } else {
+        field.code = static_cast<std::uint16_t>(number(2, what));
+        field.number = number(4, what);
+    }
+    // The code is the device name's two characters, high byte first.
+    static constexpr std::string_view kNames[] = {"X ", "Y ", "M ", "S ", "B ", "F ", "D ", "W ", "R ",
+                                                  "TN", "TS", "TC", "CN", "CS", "CC"};
+    const char name[2] = {static_cast<char>(field.code >> 8), static_cast<char>(field.code & 0xFF)};
+    const std::string_view text(name, 2);
+    for (auto known : kNames)
+        if (known == text) field.spec = devicemodel::find_by_ascii(text, 2);
+    return field;
+}
+
 // Leading zeros may be sent as spaces (§5.4); an unknown device's number is
 // read as hex so that the reader stays in step.
 std::uint32_t FieldReader::device_number(const DeviceSpec* spec, std::size_t digits_count, std::string_view what) {

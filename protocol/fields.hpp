@@ -74,6 +74,11 @@ public:
     // The 008x layout (Appendix 1): binary 11 bytes (Q form) / 13 (iQ-R form),
     // ASCII 20 / 28 characters with a 10-digit device number in the iQ-R form.
     DeviceField extended_device(DeviceForm form, std::string_view what);
+    // The A-compatible 1E layout: binary number (4 bytes) then code (2 bytes,
+    // the name's two characters, e.g. 4420 = "D "); ASCII code (4 hex digits)
+    // then number (8 hex digits, for every device). Only the A-compatible
+    // devices are known (docs/frames.md).
+    DeviceField device_1e(std::string_view what);
     // Bit-unit data: one nibble a point (first point high) or one '0'/'1' a point.
     std::vector<std::uint8_t> bits(std::size_t count, std::string_view what);
     std::vector<std::uint16_t> words(std::size_t count, std::string_view what);

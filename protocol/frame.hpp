@@ -1,4 +1,6 @@
-// 3E/4E frame headers, binary and ASCII, requests and responses.
+// Frame headers: 3E/4E (binary and ASCII, requests and responses), the
+// station-number-extended frame (binary requests; spec §3.1.1, §3.1.6) and the
+// A-compatible 1E frame (requests; protocol/frame_1e.hpp, docs/frames.md).
 // Layout: ../shared/spec/slmp-frames-and-devices.md §3.1–§3.3.
 //
 // scan_frame() looks at the start of a byte stream and says whether a whole
@@ -14,7 +16,8 @@
 namespace slmp::protocol {
 
 enum class Codec : std::uint8_t { Binary, Ascii };
-enum class FrameKind : std::uint8_t { E3, E4 };
+// E1: A-compatible 1E; Ext: the station-number-extended frame (68 00 / E8 00).
+enum class FrameKind : std::uint8_t { E3, E4, E1, Ext };
 enum class Direction : std::uint8_t { Request, Response };
 // Which data codes a port accepts: binary, ASCII, or whichever a message uses.
 enum class DataCodePolicy : std::uint8_t { Binary, Ascii, Auto };
@@ -29,10 +32,29 @@ struct Route {
     friend bool operator==(const Route&, const Route&) = default;
 };
 
+// The network No. (1–239) and station No. (1–120) a port's station is set to
+// on the real module (§3.1.3); 0 = not set. A request addressed to them is the
+// own station as much as one addressed to 00/FF.
+struct StationNumbers {
+    std::uint8_t network = 0;
+    std::uint8_t station = 0;
+    bool configured() const { return network != 0 && station != 0; }
+    friend bool operator==(const StationNumbers&, const StationNumbers&) = default;
+};
+
+// The frames a port recognises beyond 3E/4E (from its profile); bytes of a
+// frame it does not have are not a frame there, as on the real port.
+struct FrameSet {
+    bool e1 = false;                 // A-compatible 1E requests
+    bool station_extended = false;   // 68 00 requests (CC-Link IE TSN modules)
+};
+
 struct FrameHeader {
     FrameKind kind = FrameKind::E3;
     Codec codec = Codec::Binary;
-    std::uint16_t serial = 0;    // 4E only
+    std::uint16_t serial = 0;    // 4E and the station-number-extended frame
+    std::uint8_t command_1e = 0;        // 1E: the subheader, which is the command
+    std::uint16_t extended_station = 0; // station-number-extended frame (§3.1.6)
     Route route;
     std::uint16_t data_length = 0;  // request/response data length field
     std::size_t header_size = 0;    // bytes before the field the length counts from
@@ -52,7 +74,7 @@ struct FrameScan {
 };
 
 FrameScan scan_frame(std::span<const std::uint8_t> data, Direction direction, DataCodePolicy policy,
-                     std::size_t max_frame_bytes);
+                     std::size_t max_frame_bytes, FrameSet frames = {});
 
 // Size of the fixed header up to and including the data length field.
 std::size_t header_size(FrameKind kind, Codec codec);

@@ -36,6 +36,18 @@ struct FormLimit {
 
 struct PortProfile {
     Refusal frame_4e;                 // what a 4E request gets
+    // The A-compatible 1E frame (docs/frames.md): served, or its bytes are no
+    // frame at all (skipped unanswered, as an iQ-R built-in port does).
+    bool frame_1e = false;
+    std::uint8_t pc_type_1e = 0;      // 1E PC type read 15 answers this
+    // The station-number-extended frame (68 00; CC-Link IE TSN modules): served,
+    // or not a frame at all (skipped unanswered, as a port without it does).
+    bool station_extended_frame = false;
+    // Commands per connection (spec §2.3): 1 + pipeline_buffer ÷ connections
+    // requests may wait in the port's receive buffer; 0 = no limit. Requests
+    // beyond it get `pipeline_over_limit` (docs/end-codes.md: CEE0).
+    std::uint32_t pipeline_buffer = 0;
+    Refusal pipeline_over_limit{Refusal::Kind::EndCode, 0xCEE0};
     Refusal iqr_subcommands;          // what 0002/0003 (iQ-R form) requests get
     // Commands refused beyond what the port family refuses (the command table's families).
     std::vector<std::uint16_t> unsupported_commands;

@@ -1,6 +1,7 @@
 #include "protocol/reply.hpp"
 
 #include "protocol/error_response.hpp"
+#include "protocol/frame_1e.hpp"
 #include "protocol/hex.hpp"
 #include "protocol/message.hpp"
 
@@ -13,12 +14,16 @@ Reply::Reply(const Request& request) : header_(request.header) {
 }
 
 Outcome Reply::ok(std::span<const std::uint8_t> data) {
+    outcome_.action = Outcome::Action::Respond;
+    if (header_.kind == FrameKind::E1) {
+        outcome_.response = encode_response_1e(header_, data);
+        return std::move(outcome_);
+    }
     FieldWriter w(header_.codec);
     w.u16(raw(EndCode::Ok));
+    if (header_.kind == FrameKind::Ext) extended_echo(w);
     w.raw(data);
-    outcome_.action = Outcome::Action::Respond;
-    outcome_.response = encode_frame(Direction::Response, header_.kind, header_.codec, header_.serial, header_.route,
-                                     w.bytes());
+    outcome_.response = encode_frame(Direction::Response, header_, w.bytes());
     return std::move(outcome_);
 }
 
@@ -28,6 +33,15 @@ Outcome Reply::error(EndCode code, std::string note) {
     outcome_.action = Outcome::Action::Respond;
     outcome_.response = encode_error_response(header_, outcome_.command, outcome_.subcommand, code);
     return std::move(outcome_);
+}
+
+// The station-number-extended frame's response data start with the request's
+// command and subcommand, fixed 00 and the 5-byte system area (§3.2.5).
+void Reply::extended_echo(FieldWriter& w) const {
+    w.u16(outcome_.command);
+    w.u16(outcome_.subcommand);
+    w.u8(0x00);
+    for (int i = 0; i < 5; ++i) w.u8(0x00);
 }
 
 Outcome Reply::refuse(const Refusal& refusal, std::string note) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "protocol/engine.hpp"
+#include "protocol/fields.hpp"
 
 namespace slmp::protocol {
 
@@ -25,6 +26,8 @@ public:
     Outcome drop(Outcome::Action action, std::string note);
 
 private:
+    void extended_echo(FieldWriter& w) const;
+
     const FrameHeader& header_;
     Outcome outcome_;
 };

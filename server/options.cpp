@@ -46,6 +46,8 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("idle-timeout", po::value<double>(), "close a TCP connection silent for this many seconds (default 300; 0 = never)")
         ("partial-frame-timeout", po::value<double>(), "close a TCP connection whose started frame is not whole after this many seconds (default 5; 0 = never)")
         ("max-connections-per-address", po::value<unsigned>(), "TCP clients served at once per port from one IP address (default 0 = no limit)")
+        ("network-no", po::value<unsigned>(), "the station's network No. (1-239) on every port, with --station-no; requests to it are served as the own station")
+        ("station-no", po::value<unsigned>(), "the station's station No. (1-120) on every port, with --network-no")
         ("max-request-bytes", po::value<std::size_t>(), "largest request frame accepted (default 8192)")
         ("log-level,l", po::value<std::string>(), "trace, debug, info, warn, error or off (default info)")
         ("ready-file", po::value<std::string>(), "write {\"tcp\":[...],\"udp\":[...],\"http\":N,\"pid\":N} here once listening")
@@ -72,7 +74,7 @@ CommandLine parse_command_line(int argc, char** argv) {
 
     CommandLine cl;
     if (vm.count("help")) {
-        std::cout << "slmp-sim — a MELSEC CPU that answers SLMP (3E/4E, binary/ASCII) over TCP and UDP\n\n"
+        std::cout << "slmp-sim — a MELSEC CPU that answers SLMP (3E/4E, binary/ASCII; 1E and the station-number-extended frame where its profile has them) over TCP and UDP\n\n"
                   << "Usage: slmp-sim [options]\n\n" << options << "\n";
         cl.exit_now = true;
         return cl;
@@ -127,6 +129,12 @@ CommandLine parse_command_line(int argc, char** argv) {
     if (vm.count("max-connections-per-address")) {
         auto n = vm["max-connections-per-address"].as<unsigned>();
         for (auto& p : c.ports) p.max_connections_per_address = n;
+    }
+    if (vm.count("network-no") || vm.count("station-no")) {
+        auto numbers = config::checked_station_numbers(vm.count("network-no") ? vm["network-no"].as<unsigned>() : 0,
+                                                       vm.count("station-no") ? vm["station-no"].as<unsigned>() : 0,
+                                                       "--network-no/--station-no");
+        for (auto& p : c.ports) p.numbers = numbers;
     }
     if (vm.count("max-request-bytes")) {
         c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();

@@ -37,7 +37,8 @@ asio::awaitable<void> TcpListener::accept_loop() {
         }
         if (over_address_cap(socket)) continue;   // the socket closes as it goes out of scope
         auto session = std::make_shared<TcpSession>(std::move(socket), station_, config_,
-                                                    [this](TcpSession* s) { session_closed(s); });
+                                                    [this](TcpSession* s) { session_closed(s); },
+                                                    [this] { return sessions_.size(); });
         sessions_.emplace(session.get(), session);
         if (config_.max_connections_per_address > 0) ++sessions_per_address_[session->peer().address];
         session->start();

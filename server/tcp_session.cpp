@@ -22,7 +22,7 @@ protocol::DataCodePolicy to_policy(config::DataCode code) {
 }
 
 TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Station& station, const config::PortConfig& port,
-                       std::function<void(TcpSession*)> on_closed)
+                       std::function<void(TcpSession*)> on_closed, std::function<std::size_t()> connections)
     : socket_(std::move(socket)),
       station_(station),
       policy_(to_policy(port.data_code)),
@@ -30,7 +30,8 @@ TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Station& station, 
       partial_frame_timeout_(port.partial_frame_timeout_ms),
       deadline_timer_(socket_.get_executor()),
       session_(station.new_session(port)),
-      on_closed_(std::move(on_closed)) {
+      on_closed_(std::move(on_closed)),
+      connections_(std::move(connections)) {
     boost::system::error_code ec;
     peer_.transport = protocol::Transport::Tcp;
     if (auto remote = socket_.remote_endpoint(ec); ec) {
@@ -96,7 +97,12 @@ awaitable<void> TcpSession::serve() {
         pending.insert(pending.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
 
         // Answer every whole frame now in the buffer, in order, in one write.
+        // They all arrived before any was answered, so they stood in the
+        // port's receive buffer together: the commands-per-connection limit
+        // counts them (spec §2.3; docs/end-codes.md).
         std::size_t offset = 0;
+        session_.queued_ahead = 0;
+        session_.connections = connections_ ? connections_() : 1;
         bool close_after = false;
         bool restart_after = false;
         bool reset_after = false;
@@ -106,6 +112,7 @@ awaitable<void> TcpSession::serve() {
             auto& outcome = handled.outcome;
             if (outcome.action == Outcome::Action::NeedMore) break;
             offset += outcome.consumed;
+            if (outcome.action == Outcome::Action::Respond || outcome.command != 0) ++session_.queued_ahead;   // not skipped garbage
             if (outcome.action == Outcome::Action::Respond) outbox.add(std::move(outcome.response), handled.delivery);
             if (outcome.action == Outcome::Action::Close) {
                 close_after = true;

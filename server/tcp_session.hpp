@@ -22,7 +22,7 @@ namespace slmp::server {
 class TcpSession : public std::enable_shared_from_this<TcpSession> {
 public:
     TcpSession(boost::asio::ip::tcp::socket socket, station::Station& station, const config::PortConfig& port,
-               std::function<void(TcpSession*)> on_closed);
+               std::function<void(TcpSession*)> on_closed, std::function<std::size_t()> connections);
 
     void start();
     void close();   // from the server at shutdown, or the watchdog
@@ -49,6 +49,7 @@ private:
     protocol::Peer peer_;   // the client, and the simulator's port it reached
     std::string close_reason_ = "closed by the client";
     std::function<void(TcpSession*)> on_closed_;
+    std::function<std::size_t()> connections_;   // the port's open connections (commands per connection)
     bool closed_ = false;
 };
 

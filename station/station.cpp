@@ -76,6 +76,7 @@ protocol::Session Station::new_session(const config::PortConfig& port) {
     session.id = next_session_id();
     session.port.remote_password = port.remote_password;
     session.port.online_change = port.online_change.value_or(engine_.port().online_change);
+    session.own = port.numbers;
     return session;
 }
 
@@ -84,7 +85,7 @@ Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodeP
     activity_.request_starting();
     auto started = std::chrono::steady_clock::now();
     // Decode once; the scenario hook sits between decode and execute.
-    scenarios::Incoming incoming{engine_.decode(input, policy)};
+    scenarios::Incoming incoming{engine_.decode(input, policy, session.own)};
     auto plan = scenario_.before(incoming, input, session, peer);
     Handled handled;
     handled.outcome = plan.pass() ? engine_.execute(incoming.request, session) : scenario_.answer(plan, incoming.request);

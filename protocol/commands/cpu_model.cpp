@@ -1,6 +1,7 @@
 // Read Type Name 0101 — slmp-labels-remote-misc.md §5.7, hardware-behaviour.md §5.
 // The model name is 16 characters padded with spaces, sent as raw characters in
 // both codecs; the model code is a word.
+// 1E PC type read 15 answers one byte, the profile's frame_1e.pc_type (docs/frames.md).
 #include <string>
 
 #include "protocol/commands/handlers.hpp"
@@ -14,6 +15,12 @@ EndCode read_type_name(CommandContext& ctx) {
     name.resize(16, ' ');
     ctx.out.raw(std::span(reinterpret_cast<const std::uint8_t*>(name.data()), name.size()));
     ctx.out.u16(profile.model_code);
+    return EndCode::Ok;
+}
+
+EndCode read_pc_type_1e(CommandContext& ctx) {
+    if (!ctx.in.finish()) return ctx.in.error();
+    ctx.out.u8(ctx.port.pc_type_1e);
     return EndCode::Ok;
 }
 

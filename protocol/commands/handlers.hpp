@@ -23,6 +23,11 @@ EndCode random_write_bits(CommandContext& ctx);
 EndCode monitor_register(CommandContext& ctx);
 EndCode monitor_execute(CommandContext& ctx);
 
+// device_1e.cpp — the A-compatible 1E frame's batch read/write (00-03) and
+// test bit units (04); 05 and 07 use the 3E decoders (protocol/frame_1e.cpp).
+void decode_batch_1e(DecodeContext& d);
+void decode_test_bits_1e(DecodeContext& d);
+
 // device_block.cpp — Read Block 0406 / Write Block 1406.
 void decode_block_read(DecodeContext& d);
 void decode_block_write(DecodeContext& d);
@@ -37,9 +42,11 @@ EndCode extend_unit_write(CommandContext& ctx);
 
 // cpu_model.cpp — Read Type Name 0101.
 EndCode read_type_name(CommandContext& ctx);
+EndCode read_pc_type_1e(CommandContext& ctx);   // 1E 15
 
 // loopback.cpp — Self Test 0619.
 EndCode self_test(CommandContext& ctx);
+EndCode self_test_1e(CommandContext& ctx);   // 1E 16
 
 // remote.cpp — Remote RUN 1001, STOP 1002, PAUSE 1003, Latch Clear 1005,
 // RESET 1006, and Clear Error 1617 (the same operating-state rules).
@@ -49,6 +56,8 @@ EndCode remote_pause(CommandContext& ctx);
 EndCode remote_latch_clear(CommandContext& ctx);
 EndCode remote_reset(CommandContext& ctx);
 EndCode clear_error(CommandContext& ctx);
+EndCode remote_run_1e(CommandContext& ctx);    // 1E 13
+EndCode remote_stop_1e(CommandContext& ctx);   // 1E 14
 
 // password.cpp — Remote Password Unlock 1630 / Lock 1631.
 EndCode password_unlock(CommandContext& ctx);

@@ -42,8 +42,10 @@ inline void fail_field(DecodeContext& d, bool after_checks = false) {
     d.out.error_field = d.in.error_field();
 }
 
-// One device in the layout the row's subcommand selects (plain or 008x).
+// One device in the layout the row's subcommand selects (plain or 008x), or
+// the 1E layout for a 1E request.
 inline DeviceField read_device(DecodeContext& d, std::string_view what) {
+    if (d.a_compatible) return d.in.device_1e(what);
     return d.spec.extended() ? d.in.extended_device(d.spec.form, what) : d.in.device(d.spec.form, what);
 }
 

@@ -4,6 +4,8 @@
 //   1003 Remote PAUSE  mode (word: 0001 / 0003)
 //   1005 Remote Latch Clear  fixed word 0001
 //   1006 Remote RESET  fixed word 0001; on success no response at all
+//   1E 13 Remote RUN / 14 Remote STOP: no data (docs/frames.md); RUN is a
+//   normal (not forced) RUN that clears nothing
 // Check order: field layout and length (C061) first, then field values (C05C),
 // then the operating-state rules of devicemodel::OperatingState. The state
 // rules' end codes where the manuals are silent are chosen (docs/cpu-runtime.md):
@@ -79,6 +81,17 @@ EndCode remote_reset(CommandContext& ctx) {
 EndCode clear_error(CommandContext& ctx) {
     if (!ctx.in.finish()) return ctx.in.error();
     return end_code_for(ctx.cpu.runtime().clear_error(ctx.cpu.memory()));
+}
+
+EndCode remote_run_1e(CommandContext& ctx) {
+    if (!ctx.in.finish()) return ctx.in.error();
+    auto& cpu = ctx.cpu;
+    return end_code_for(cpu.runtime().remote_run(cpu.memory(), ctx.session.id, false, ClearMode::None));
+}
+
+EndCode remote_stop_1e(CommandContext& ctx) {
+    if (!ctx.in.finish()) return ctx.in.error();
+    return end_code_for(ctx.cpu.runtime().remote_stop(ctx.cpu.memory(), ctx.session.id));
 }
 
 }  // namespace slmp::protocol::commands

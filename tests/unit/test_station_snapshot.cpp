@@ -85,8 +85,8 @@ TEST_CASE("station snapshot: take and restore times of an R08CPU with default si
     auto ms = [](clock::duration d) { return std::chrono::duration<double, std::milli>(d).count() / kRounds; };
     std::cout << "station snapshot (R08CPU, default sizes, " << snapshot.memory_bytes() << " bytes): take " << ms(take)
               << " ms, restore " << ms(restore) << " ms (mean of " << kRounds << ")\n";
+    // Times are reported, never asserted (docs/testing.md): only the restore's effect is checked.
     CHECK(cpu.memory().value(*d, 5) == 0);
-    CHECK(ms(restore) < 1000);   // generous: only a broken build is this slow
 }
 
 TEST_CASE("virtual clock: frozen it moves only by advance(); set() keeps the mode", "[station][clock]") {
