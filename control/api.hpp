@@ -32,6 +32,7 @@ struct Api {
 };
 
 void add_device_endpoints(Router& router, Api& api);       // /api/devices/{address}
+void add_label_endpoints(Router& router, Api& api);        // /api/labels[/{name}]
 void add_buffer_endpoints(Router& router, Api& api);       // /api/buffer[/{module}/{address}]
 void add_scenario_endpoints(Router& router, Api& api);     // /api/scenarios[/{name}]
 void add_fault_endpoints(Router& router, Api& api);        // /api/faults[/{name}]
