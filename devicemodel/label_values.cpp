@@ -4,6 +4,7 @@
 #include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 
@@ -153,7 +154,9 @@ std::optional<LabelScalar> parse_label_scalar(BasicType type, std::string_view t
         return s;
     }
     if (type == BasicType::Bit) {
-        for (auto [word, v] : {std::pair{"ON", 1}, {"on", 1}, {"true", 1}, {"OFF", 0}, {"off", 0}, {"false", 0}})
+        constexpr std::pair<std::string_view, int> kWords[] = {{"ON", 1}, {"on", 1}, {"true", 1},
+                                                               {"OFF", 0}, {"off", 0}, {"false", 0}};
+        for (auto [word, v] : kWords)
             if (text == word) {
                 s.integer = v;
                 return s;

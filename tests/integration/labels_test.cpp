@@ -15,7 +15,7 @@ using slmp::devicemodel::BasicType;
 
 namespace {
 
-const char* kLabels = R"({
+const char* kLabels = R"J({
   "structures": [
     {"name": "Valve", "members": [{"name": "Open", "type": "Bit"}, {"name": "Pos", "type": "INT"}]},
     {"name": "TankT", "members": [{"name": "Level", "type": "REAL"}, {"name": "V", "type": "Valve", "dims": [2]},
@@ -33,7 +33,7 @@ const char* kLabels = R"({
     {"name": "Cube", "type": "DINT", "dims": [2, 2, 2]},
     {"name": "Tank1", "type": "TankT"},
     {"name": "T1", "type": "Timer", "device": "T5"},
-    {"name": "Hidden", "type": "Bit", "external": false}]})";
+    {"name": "Hidden", "type": "Bit", "external": false}]})J";
 
 const std::vector<Wire> kWires = {
     {FrameKind::E3, Codec::Binary, 0},
@@ -140,7 +140,7 @@ TEST_CASE("labels over UDP: every kind, both command pairs, four frame shapes", 
 
 TEST_CASE("--labels FILE declares the labels; a mistake stops start-up with the file and pointer", "[labels][cli]") {
     TempDir dir;
-    auto file = dir.write("labels.json", R"({"labels": [{"name": "LabelW", "type": "INT", "device": "D9000"}]})");
+    auto file = dir.write("labels.json", R"J({"labels": [{"name": "LabelW", "type": "INT", "device": "D9000"}]})J");
     {
         SimProcess sim(with_args({"--labels", file.string()}));
         TcpLink link(sim.tcp_port());
@@ -150,7 +150,7 @@ TEST_CASE("--labels FILE declares the labels; a mistake stops start-up with the 
         CHECK(show(link.exchange(client::read_words(w.options(), addr("D9000"), 1))) ==
               show(expected_response(w, word_data(w, {5}))));
     }
-    auto bad = dir.write("bad.json", R"({"labels": [{"name": "A", "type": "INTEGER"}]})");
+    auto bad = dir.write("bad.json", R"J({"labels": [{"name": "A", "type": "INTEGER"}]})J");
     auto result = run_sim({"--labels", bad.string(), "--tcp-port", "0", "--no-http"});
     CHECK(result.exit_code == 2);
     CHECK_THAT(result.err, Catch::Contains(bad.string() + ": /labels/0/type: unknown data type 'INTEGER'"));

@@ -55,7 +55,7 @@ TEST_CASE("command table: device commands have a decoder; the write ones are fla
     // Everything else that writes memory: buffer memory, and the remote
     // operations that clear devices (RUN with a clear mode, Latch Clear, RESET).
     CHECK(commands_where(&CommandSpec::writes) ==
-          std::set<std::uint16_t>{0x1001, 0x1005, 0x1006, 0x1401, 0x1402, 0x1406, 0x1601, 0x1613});
+          std::set<std::uint16_t>{0x1001, 0x1005, 0x1006, 0x1401, 0x1402, 0x1406, 0x141A, 0x141B, 0x1601, 0x1613});
 }
 
 TEST_CASE("command table: the device form and the extended layout follow the subcommand", "[table]") {

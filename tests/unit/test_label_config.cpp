@@ -22,9 +22,9 @@ std::string declare_error(const std::string& json, const std::string& profile = 
 }  // namespace
 
 TEST_CASE("the issue's minimal form: LabelW on D9000, DDD[20] in the label area, Hidden not external", "[labels][config]") {
-    auto cpu = cpu_with_labels(R"({"labels": [{"name": "LabelW", "type": "Word [Signed]", "device": "D9000"},
+    auto cpu = cpu_with_labels(R"J({"labels": [{"name": "LabelW", "type": "Word [Signed]", "device": "D9000"},
                                                {"name": "DDD", "type": "Word [Signed]", "dims": [20]},
-                                               {"name": "Hidden", "type": "Bit", "external": false}]})");
+                                               {"name": "Hidden", "type": "Bit", "external": false}]})J");
     const auto& labels = cpu.labels().labels();
     REQUIRE(labels.size() == 3);
     CHECK(devicemodel::format_address(*labels[0].device) == "D9000");
@@ -69,48 +69,48 @@ TEST_CASE("type names: GX Works3 and IEC aliases map to the same type", "[labels
 
 TEST_CASE("declaration mistakes stop start-up with the file, the pointer and the fix", "[labels][config]") {
     const auto d_size = std::to_string(make_cpu().memory().size(devicemodel::Area::D));
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "WORDX"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "WORDX"}]})J") ==
           "test.json: /labels/0/type: unknown data type 'WORDX'; use a GX Works3 type (Bit, Word [Signed], Word "
           "[Unsigned]/Bit String [16-bit], Double Word [Signed], Double Word [Unsigned]/Bit String [32-bit], FLOAT "
           "[Single Precision], FLOAT [Double Precision], Time, String(32), String [Unicode](32), Timer, Counter, "
           "Retentive Timer, Long Timer, Long Counter, Long Retentive Timer), an IEC name (BOOL, INT, UINT, WORD, DINT, "
           "UDINT, DWORD, REAL, LREAL, TIME, STRING[32], WSTRING[32]) or a structure declared before it");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "DINT", "dims": [10], "device": "D100"},
-                                        {"name": "B", "type": "INT", "device": "D119"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "DINT", "dims": [10], "device": "D100"},
+                                        {"name": "B", "type": "INT", "device": "D119"}]})J") ==
           "test.json: /labels/1/device: label 'B' on D119 overlaps label 'A' on D100; assign devices that do not overlap");
-    CHECK(declare_error(R"({"labels": [{"name": "Big", "type": "INT(0..19999)", "device": "D0"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "Big", "type": "INT(0..19999)", "device": "D0"}]})J") ==
           "test.json: /labels/0/device: label 'Big' needs 20000 device(s) from D0, past the D size of " + d_size +
               "; assign a lower device number or raise device_sizes");
-    CHECK(declare_error(R"({"labels": [{"name": "1abc", "type": "INT"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "1abc", "type": "INT"}]})J") ==
           "test.json: /labels/0: bad label name: a name cannot start with a digit; rename the label");
-    CHECK(declare_error(R"({"labels": [{"name": "D100", "type": "INT"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "D100", "type": "INT"}]})J") ==
           "test.json: /labels/0: bad label name: 'D100' is a device name; rename the label");
-    CHECK(declare_error(R"({"labels": [{"name": "A.b", "type": "INT"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A.b", "type": "INT"}]})J") ==
           "test.json: /labels/0: bad label name: a name may hold only letters, digits and '_' (no '.', '[', ',', '%' "
           "or spaces); rename the label");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "INT"}, {"name": "A", "type": "Bit"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "INT"}, {"name": "A", "type": "Bit"}]})J") ==
           "test.json: /labels/1: label 'A' is declared twice; rename or remove one");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "Bit", "device": "D0"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "Bit", "device": "D0"}]})J") ==
           "test.json: /labels/0/device: a Bit label needs a bit device, not D0; assign it to a bit device such as M, "
           "X, Y, L or B");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "INT", "device": "M0"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "INT", "device": "M0"}]})J") ==
           "test.json: /labels/0/device: a Word [Signed] label needs a word device, not M0; assign it to a word device "
           "such as D, W, R or ZR");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "Timer", "device": "C3"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "Timer", "device": "C3"}]})J") ==
           "test.json: /labels/0/device: a Timer label needs a T device, not CN3; assign it to e.g. TN0");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "INT(1..19)"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "INT(1..19)"}]})J") ==
           "test.json: /labels/0/type: array range '1..19' does not start at 0; write an array as (0..n), (0..n,0..m) "
           "or (0..n,0..m,0..k) and a string as String(n), n 1 to 255");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "INT(0..1)", "dims": [2]}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "INT(0..1)", "dims": [2]}]})J") ==
           "test.json: /labels/0/type: the type 'INT(0..1)' is an array and \"dims\" is given too; give the array "
           "once: in the type or in \"dims\"");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "INT", "dims": [2, 2, 2, 2]}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "INT", "dims": [2, 2, 2, 2]}]})J") ==
           "test.json: /labels/0/dims: an array has 1 to 3 dimensions; write e.g. [20] or [2, 20]");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "INT", "dims": [70000]}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "INT", "dims": [70000]}]})J") ==
           "test.json: /labels/0/dims/0: value 70000 is larger than 65536; use a smaller number");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "INT", "devic": "D0"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "INT", "devic": "D0"}]})J") ==
           "test.json: /labels/0/devic: unknown key; use one of: name, type, device, dims, external, comment");
-    CHECK(declare_error(R"({"labels": [{"name": "A", "type": "INT", "device": "Q5"}]})") ==
+    CHECK(declare_error(R"J({"labels": [{"name": "A", "type": "INT", "device": "Q5"}]})J") ==
           "test.json: /labels/0/device: " +
               [] {
                   std::string e;
@@ -118,16 +118,16 @@ TEST_CASE("declaration mistakes stop start-up with the file, the pointer and the
                   return e;
               }() +
               "; write a device such as D1000, M100, ZR0 (T5 for a Timer label)");
-    CHECK(declare_error(R"({"structures": [{"name": "In", "members": [{"name": "x", "type": "INT"}]},
+    CHECK(declare_error(R"J({"structures": [{"name": "In", "members": [{"name": "x", "type": "INT"}]},
                                             {"name": "Out", "members": [{"name": "i", "type": "In"}]}],
-                            "labels": [{"name": "A", "type": "Out", "device": "D0"}]})") ==
+                            "labels": [{"name": "A", "type": "Out", "device": "D0"}]})J") ==
           "test.json: /labels/0/device: structure 'Out' has member 'i' of a structure or timer type, and such a label "
           "cannot be assigned to a device (slmp-labels-remote-misc.md §2.3); remove \"device\" to place the label in "
           "the label area");
-    CHECK(declare_error(R"({"structures": [{"name": "Out", "members": [{"name": "i", "type": "Later"}]},
-                                            {"name": "Later", "members": [{"name": "x", "type": "INT"}]}]})") ==
-          Catch::StartsWith("test.json: /structures/0/members/0/type: unknown data type 'Later'; use a GX Works3 type"));
-    CHECK(declare_error(R"({"structures": [{"name": "S", "members": [{"name": "x", "type": "INT"}, {"name": "x", "type": "INT"}]}]})") ==
+    CHECK_THAT(declare_error(R"J({"structures": [{"name": "Out", "members": [{"name": "i", "type": "Later"}]},
+                                            {"name": "Later", "members": [{"name": "x", "type": "INT"}]}]})J"),
+               Catch::StartsWith("test.json: /structures/0/members/0/type: unknown data type 'Later'; use a GX Works3 type"));
+    CHECK(declare_error(R"J({"structures": [{"name": "S", "members": [{"name": "x", "type": "INT"}, {"name": "x", "type": "INT"}]}]})J") ==
           "test.json: /structures/0: member 'x' is declared twice; rename one");
 }
 

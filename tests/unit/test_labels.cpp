@@ -14,20 +14,20 @@ namespace {
 
 // The manuals' labels. "Lbl" is a 16-bit array in examples 2 (type ID 02) and
 // a bit array in example 1, so each example gets its own CPU.
-const char* kWordLbl = R"({"labels": [{"name": "Lbl", "type": "Word [Unsigned]/Bit String [16-bit](0..9)"}]})";
-const char* kBitLbl = R"({"labels": [{"name": "Lbl", "type": "Bit(0..9)"}]})";
+const char* kWordLbl = R"J({"labels": [{"name": "Lbl", "type": "Word [Unsigned]/Bit String [16-bit](0..9)"}]})J";
+const char* kBitLbl = R"J({"labels": [{"name": "Lbl", "type": "Bit(0..9)"}]})J";
 // Example 3: Typ1.led and Typ1.No. The manual prints type ID 03 for No while
 // its data are two words (§2.7 "Manual inconsistency"); slmp-sim answers the
 // label's real type, so No is declared as words and the vector carries 02.
-const char* kTyp1 = R"({"structures": [{"name": "T1Type", "members": [
+const char* kTyp1 = R"J({"structures": [{"name": "T1Type", "members": [
                           {"name": "led", "type": "Word [Unsigned]/Bit String [16-bit]", "dims": [10]},
                           {"name": "No", "type": "Word [Unsigned]/Bit String [16-bit]", "dims": [10]}]}],
-                        "labels": [{"name": "Typ1", "type": "T1Type"}]})";
+                        "labels": [{"name": "Typ1", "type": "T1Type"}]})J";
 // 041C/141B: LabelB (bit), LabelW (word, ID 02) and Sw.led (word member).
-const char* kRandom = R"({"structures": [{"name": "SwType", "members": [{"name": "led", "type": "WORD"}]}],
+const char* kRandom = R"J({"structures": [{"name": "SwType", "members": [{"name": "led", "type": "WORD"}]}],
                           "labels": [{"name": "LabelB", "type": "Bit", "device": "M100"},
                                      {"name": "LabelW", "type": "UINT", "device": "D9000"},
-                                     {"name": "Sw", "type": "SwType"}]})";
+                                     {"name": "Sw", "type": "SwType"}]})J";
 
 const auto kAll = {kBinary3E, kBinary4E, kAscii3E, kAscii4E};
 
@@ -157,8 +157,8 @@ TEST_CASE("§2.10 141B example: LabelB=ON, LabelW=0031H, Sw.led=0001H; D9000 and
 
 TEST_CASE("§2.9 the data type IDs: 10 is 0A, TIME 7FFFFFFF is one 32-bit value", "[labels][spec]") {
     auto wire = GENERATE(values<Wire>(kAll));
-    auto cpu = cpu_with_labels(R"({"labels": [{"name": "U", "type": "String [Unicode](3)"},
-                                               {"name": "Tm", "type": "Time"}]})");
+    auto cpu = cpu_with_labels(R"J({"labels": [{"name": "U", "type": "String [Unicode](3)"},
+                                               {"name": "Tm", "type": "Time"}]})J");
     REQUIRE(wire.exchange(cpu, random_label_write_req({{"U", 8, words({0x41, 0x41, 0x41, 0})}, {"Tm", 4, dword(0x7FFFFFFF)}})) ==
             wire.expect(ok()));
     CHECK(wire.exchange(cpu, random_label_read_req({"U", "Tm"})) ==
@@ -202,9 +202,9 @@ TEST_CASE("round trip: every basic type × 141B/041C and 141A/041A, on D and in 
     auto wire = GENERATE(values<Wire>(kAll));
     for (const auto& t : type_cases()) {
         CAPTURE(t.type);
-        const auto config = R"({"labels": [{"name": "OnD", "type": ")" + t.type + R"(", "device": "D500"},
-                                            {"name": "InArea", "type": ")" + t.type + R"("},
-                                            {"name": "Arr", "type": ")" + t.type + R"(", "dims": [3], "device": "D600"}]})";
+        const auto config = "{\"labels\": [{\"name\": \"OnD\", \"type\": \"" + t.type + "\", \"device\": \"D500\"}, "
+                            "{\"name\": \"InArea\", \"type\": \"" + t.type + "\"}, "
+                            "{\"name\": \"Arr\", \"type\": \"" + t.type + "\", \"dims\": [3], \"device\": \"D600\"}]}";
         auto cpu = cpu_with_labels(config);
         for (const std::string name : {"OnD", "InArea"}) {
             CAPTURE(name);
@@ -235,7 +235,7 @@ TEST_CASE("round trip: every basic type × 141B/041C and 141A/041A, on D and in 
 
 TEST_CASE("names: nested structures, arrays of structures, 2-D/3-D, k/h indexes, timers, %n.%m", "[labels]") {
     auto wire = GENERATE(values<Wire>(kAll));
-    auto cpu = cpu_with_labels(R"({
+    auto cpu = cpu_with_labels(R"J({
         "structures": [
             {"name": "Valve", "members": [{"name": "Open", "type": "Bit"}, {"name": "Pos", "type": "INT"}]},
             {"name": "TankT", "members": [{"name": "Level", "type": "REAL"}, {"name": "V", "type": "Valve", "dims": [2]},
@@ -247,7 +247,7 @@ TEST_CASE("names: nested structures, arrays of structures, 2-D/3-D, k/h indexes,
             {"name": "A", "type": "Word [Signed](0..1,0..19)"},
             {"name": "Cube", "type": "DINT", "dims": [2, 3, 4], "device": "ZR100"},
             {"name": "T1", "type": "Timer", "device": "T5"},
-            {"name": "LT1", "type": "Long Timer", "device": "LT2"}]})");
+            {"name": "LT1", "type": "Long Timer", "device": "LT2"}]})J");
     auto check_word = [&](const std::string& name, std::uint16_t value) {
         CAPTURE(name);
         CHECK(wire.exchange(cpu, random_label_write_req({{name, 2, word(value)}})) == wire.expect(ok()));
@@ -295,7 +295,7 @@ TEST_CASE("names: nested structures, arrays of structures, 2-D/3-D, k/h indexes,
 
 TEST_CASE("errors: end code per case, memory unchanged", "[labels][errors]") {
     auto wire = GENERATE(values<Wire>(kAll));
-    auto cpu = cpu_with_labels(R"({
+    auto cpu = cpu_with_labels(R"J({
         "structures": [{"name": "S", "members": [{"name": "m", "type": "INT", "dims": [4]}, {"name": "b", "type": "Bit"}]}],
         "labels": [{"name": "LabelW", "type": "Word [Signed]", "device": "D9000"},
                    {"name": "DDD", "type": "Word [Signed]", "dims": [20]},
@@ -303,7 +303,7 @@ TEST_CASE("errors: end code per case, memory unchanged", "[labels][errors]") {
                    {"name": "Bits2", "type": "Bit(0..1,0..7)"},
                    {"name": "Tm", "type": "Timer"},
                    {"name": "Str", "type": "String(4)"},
-                   {"name": "St", "type": "S"}]})");
+                   {"name": "St", "type": "S"}]})J");
     // Something in memory so that "unchanged" means something.
     REQUIRE(wire.exchange(cpu, random_label_write_req({{"LabelW", 2, word(7)}, {"DDD[3]", 2, word(8)}})) ==
             wire.expect(ok()));
@@ -364,13 +364,13 @@ TEST_CASE("errors: end code per case, memory unchanged", "[labels][errors]") {
 
 TEST_CASE("errors: a response over 1920 bytes is CEE2", "[labels][errors]") {
     auto wire = GENERATE(values<Wire>(kAll));
-    auto cpu = cpu_with_labels(R"({"labels": [{"name": "Big", "type": "INT", "dims": [1000]}]})");
+    auto cpu = cpu_with_labels(R"J({"labels": [{"name": "Big", "type": "INT", "dims": [1000]}]})J");
     // 960 words = 1920 bytes of data binary (plus the header fields): over in both codecs.
     CHECK(wire.exchange(cpu, array_read_req({{"Big[0]", 1, 1920}})) == wire.expect(error(0xCEE2, 0x041A, 0x0000)));
 }
 
 TEST_CASE("§12 families: Q/L, QJ71E71 and FX5 ports refuse the label commands with C059", "[labels][families]") {
-    const auto config = R"({"labels": [{"name": "LabelW", "type": "INT", "device": "D100"}]})";
+    const auto config = R"J({"labels": [{"name": "LabelW", "type": "INT", "device": "D100"}]})J";
     for (const std::string profile : {"Q26UDEHCPU", "L26CPU-BT", "Q06UDVCPU-QJ71E71", "FX5U-32MR"}) {
         CAPTURE(profile);
         auto cpu = cpu_with_labels(config, profile);
@@ -389,16 +389,16 @@ TEST_CASE("§12 families: Q/L, QJ71E71 and FX5 ports refuse the label commands w
 }
 
 TEST_CASE("unknown label subcommand answers C059, not 0000", "[labels][errors]") {
-    auto cpu = cpu_with_labels(R"({"labels": [{"name": "W", "type": "INT"}]})");
+    auto cpu = cpu_with_labels(R"J({"labels": [{"name": "W", "type": "INT"}]})J");
     CHECK(kBinary3E.exchange(cpu, word(0x041C) + word(0x0002) + word(1) + word(0) + label_name("W")) ==
           kBinary3E.expect(error(0xC059, 0x041C, 0x0002)));
 }
 
 TEST_CASE("labels survive a snapshot: the label area is saved and restored", "[labels][snapshot]") {
-    auto cpu = cpu_with_labels(R"({"labels": [{"name": "A", "type": "DINT"}, {"name": "S", "type": "String(8)"}]})");
+    auto cpu = cpu_with_labels(R"J({"labels": [{"name": "A", "type": "DINT"}, {"name": "S", "type": "String(8)"}]})J");
     REQUIRE(kAscii3E.exchange(cpu, random_label_write_req({{"A", 4, dword(0xCAFEF00D)}})) == kAscii3E.expect(ok()));
     auto bytes = devicemodel::encode_snapshot(cpu.memory(), cpu.profile().name);
-    auto fresh = cpu_with_labels(R"({"labels": [{"name": "A", "type": "DINT"}, {"name": "S", "type": "String(8)"}]})");
+    auto fresh = cpu_with_labels(R"J({"labels": [{"name": "A", "type": "DINT"}, {"name": "S", "type": "String(8)"}]})J");
     auto result = devicemodel::restore_snapshot(bytes, fresh.memory(), cpu.profile().name, fresh.runtime().latch(),
                                                 devicemodel::RestoreScope::All);
     REQUIRE(result.ok);
