@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "frames.hpp"
+#include "http_client.hpp"
 #include "link.hpp"
 #include "protocol/client_labels.hpp"
 #include "sim_process.hpp"
@@ -42,7 +43,7 @@ const std::vector<Wire> kWires = {
     {FrameKind::E4, Codec::Ascii, 0xFEDC},
 };
 
-client::Response exchange(Link& link, const Bytes& request) {
+client::Response ask(Link& link, const Bytes& request) {
     auto reply = link.exchange(request);
     auto parsed = client::parse_response(reply);
     REQUIRE(parsed);
@@ -68,11 +69,11 @@ void labels_round_trip(Link& link) {
             {"Tank1.Delay.N", {BasicType::UWord, {300}}},
             {"T1.N", {BasicType::UWord, {12}}},
         };
-        auto wrote = exchange(link, client::label_write_random(o, writes));
+        auto wrote = ask(link, client::label_write_random(o, writes));
         REQUIRE(wrote.end_code == 0);
         std::vector<std::string> names;
         for (const auto& e : writes) names.push_back(e.name);
-        auto read = exchange(link, client::label_read_random(o, names));
+        auto read = ask(link, client::label_read_random(o, names));
         REQUIRE(read.end_code == 0);
         auto data = client::decode_label_read(read, false);
         REQUIRE(data);
@@ -93,13 +94,13 @@ void labels_round_trip(Link& link) {
 
         // 141A / 041A: DDD[5..7] on D9105-D9107, then 1401 to D9108 read back as DDD[8].
         std::vector<client::ArrayWrite> arrays = {{"DDD[5]", BasicType::Word, {{1}, {2}, {3}}}};
-        REQUIRE(exchange(link, client::array_label_write(o, arrays)).end_code == 0);
+        REQUIRE(ask(link, client::array_label_write(o, arrays)).end_code == 0);
         CHECK(show(link.exchange(client::read_words(o, addr("D9105"), 3))) ==
               show(expected_response(w, word_data(w, {1, 2, 3}))));
         std::vector<std::uint16_t> nine = {9};
-        REQUIRE(exchange(link, client::write_words(o, addr("D9108"), nine)).end_code == 0);
+        REQUIRE(ask(link, client::write_words(o, addr("D9108"), nine)).end_code == 0);
         std::vector<client::ArrayRead> reads = {{"DDD[5]", false, 8}, {"Cube[0,0,0]", false, 32}};
-        auto arr = exchange(link, client::array_label_read(o, reads));
+        auto arr = ask(link, client::array_label_read(o, reads));
         REQUIRE(arr.end_code == 0);
         auto decoded = client::decode_label_read(arr, true);
         REQUIRE(decoded);
@@ -109,10 +110,10 @@ void labels_round_trip(Link& link) {
         CHECK((*decoded)[1].elements.back() == std::vector<std::uint16_t>{7, 0});
 
         // Not external: 40C0, and a refused write changes nothing.
-        auto hidden = exchange(link, client::label_read_random(o, std::vector<std::string>{"Hidden"}));
+        auto hidden = ask(link, client::label_read_random(o, std::vector<std::string>{"Hidden"}));
         CHECK(hidden.end_code == 0x40C0);
         std::vector<client::LabelWrite> bad = {{"LabelW", {BasicType::Word, {1}}}, {"Hidden", {BasicType::Bit, {1}}}};
-        CHECK(exchange(link, client::label_write_random(o, bad)).end_code == 0x40C0);
+        CHECK(ask(link, client::label_write_random(o, bad)).end_code == 0x40C0);
         CHECK(show(link.exchange(client::read_words(o, addr("D9000"), 1))) ==
               show(expected_response(w, word_data(w, {0x8001}))));
     }
@@ -146,12 +147,42 @@ TEST_CASE("--labels FILE declares the labels; a mistake stops start-up with the 
         TcpLink link(sim.tcp_port());
         const Wire w{FrameKind::E3, Codec::Binary, 0};
         std::vector<client::LabelWrite> writes = {{"LabelW", {BasicType::Word, {5}}}};
-        REQUIRE(exchange(link, client::label_write_random(w.options(), writes)).end_code == 0);
+        REQUIRE(ask(link, client::label_write_random(w.options(), writes)).end_code == 0);
         CHECK(show(link.exchange(client::read_words(w.options(), addr("D9000"), 1))) ==
               show(expected_response(w, word_data(w, {5}))));
     }
     auto bad = dir.write("bad.json", R"J({"labels": [{"name": "A", "type": "INTEGER"}]})J");
-    auto result = run_sim({"--labels", bad.string(), "--tcp-port", "0", "--no-http"});
+    auto result = run_sim({"--labels", bad.string(), "--tcp-port", "0", "--udp-port", "0", "--no-http"});
     CHECK(result.exit_code == 2);
     CHECK_THAT(result.err, Catch::Contains(bad.string() + ": /labels/0/type: unknown data type 'INTEGER'"));
+}
+
+TEST_CASE("HTTP: GET /api/labels lists them; GET/PUT /api/labels/{name} share memory with SLMP", "[labels][http]") {
+    using nlohmann::json;
+    SimProcess sim(labelled());
+    auto list = http_get(sim.http_port(), "/api/labels").json();
+    REQUIRE(list["labels"].size() == 13);
+    CHECK(list["labels"][1] == json{{"name", "LabelW"}, {"type", "Word [Signed]"}, {"device", "D9000"},
+                                    {"external", true}, {"words", 1}});
+    CHECK(list["labels"][12]["external"] == false);
+    CHECK(list["structures"][0]["name"] == "Valve");
+
+    auto put = http_put(sim.http_port(), "/api/labels/DDD%5B2%5D", R"J({"values": [5, -6]})J");
+    REQUIRE(put.status == 200);
+    CHECK(put.json() == json{{"name", "DDD[2]"}, {"type", "Word [Signed]"}, {"values", {5, -6}}});
+    CHECK(http_put(sim.http_port(), "/api/labels/Title", R"J({"string": "Hi"})J").status == 200);
+    CHECK(http_put(sim.http_port(), "/api/labels/Speed", R"J({"values": [2.5]})J").status == 200);
+    // The same memory over SLMP: DDD[2..3] are D9102-D9103.
+    TcpLink link(sim.tcp_port());
+    const Wire w{FrameKind::E3, Codec::Binary, 0};
+    CHECK(show(link.exchange(client::read_words(w.options(), addr("D9102"), 2))) ==
+          show(expected_response(w, word_data(w, {5, 0xFFFA}))));
+    CHECK(http_get(sim.http_port(), "/api/labels/Speed").json()["values"] == json{2.5});
+    CHECK(http_get(sim.http_port(), "/api/labels/Title").json()["values"] == json{"Hi"});
+    CHECK(http_get(sim.http_port(), "/api/labels/Hidden").status == 200);   // the API reaches it
+    // Refused: nothing written.
+    CHECK(http_get(sim.http_port(), "/api/labels/Nope").status == 404);
+    CHECK(http_put(sim.http_port(), "/api/labels/LabelW", R"J({"values": [40000]})J").status == 400);
+    CHECK(http_put(sim.http_port(), "/api/labels/DDD%5B19%5D", R"J({"values": [1, 2]})J").status == 400);
+    CHECK(http_get(sim.http_port(), "/api/labels/DDD%5B19%5D").json()["values"] == json{0});
 }
