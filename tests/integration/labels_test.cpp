@@ -139,7 +139,7 @@ TEST_CASE("labels over UDP: every kind, both command pairs, four frame shapes", 
     labels_round_trip(link);
 }
 
-TEST_CASE("--labels FILE declares the labels; a mistake stops start-up with the file and pointer", "[labels][cli]") {
+TEST_CASE("labels from a file given with --labels, and a mistake in it stops start-up naming the file and pointer", "[labels][cli]") {
     TempDir dir;
     auto file = dir.write("labels.json", R"J({"labels": [{"name": "LabelW", "type": "INT", "device": "D9000"}]})J");
     {
@@ -157,7 +157,7 @@ TEST_CASE("--labels FILE declares the labels; a mistake stops start-up with the 
     CHECK_THAT(result.err, Catch::Contains(bad.string() + ": /labels/0/type: unknown data type 'INTEGER'"));
 }
 
-TEST_CASE("HTTP: GET /api/labels lists them; GET/PUT /api/labels/{name} share memory with SLMP", "[labels][http]") {
+TEST_CASE("HTTP: GET /api/labels lists them, GET/PUT /api/labels/{name} share memory with SLMP", "[labels][http]") {
     using nlohmann::json;
     SimProcess sim(labelled());
     auto list = http_get(sim.http_port(), "/api/labels").json();

@@ -137,7 +137,7 @@ TEST_CASE("§2.9 041C example: LabelB, LabelW, Sw.led (spare answered 00)", "[la
                                  "0003" "01" "00" "0002" "0001" "02" "00" "0002" "0044" "02" "00" "0002" "0031"})));
 }
 
-TEST_CASE("§2.10 141B example: LabelB=ON, LabelW=0031H, Sw.led=0001H; D9000 and M100 agree", "[labels][spec]") {
+TEST_CASE("§2.10 141B example: LabelB=ON, LabelW=0031H, Sw.led=0001H, and D9000 and M100 agree", "[labels][spec]") {
     auto wire = GENERATE(values<Wire>(kAll));
     auto cpu = cpu_with_labels(kRandom);
     const Payload req{"1B 14 00 00 03 00 00 00 06 00 4C 00 61 00 62 00 65 00 6C 00 42 00 02 00 01 00 06 00 4C 00 61 00 "
