@@ -8,6 +8,7 @@
 #include "http_client.hpp"
 #include "link.hpp"
 #include "protocol/client_labels.hpp"
+#include "cli_support.hpp"
 #include "sim_process.hpp"
 
 using namespace slmp::test;
@@ -185,4 +186,31 @@ TEST_CASE("HTTP: GET /api/labels lists them, GET/PUT /api/labels/{name} share me
     CHECK(http_put(sim.http_port(), "/api/labels/LabelW", R"J({"values": [40000]})J").status == 400);
     CHECK(http_put(sim.http_port(), "/api/labels/DDD%5B19%5D", R"J({"values": [1, 2]})J").status == 400);
     CHECK(http_get(sim.http_port(), "/api/labels/DDD%5B19%5D").json()["values"] == json{0});
+}
+
+TEST_CASE("slmp label write/read: the CLI asks the type, then writes and reads by name", "[labels][cli]") {
+    SimProcess sim(labelled());
+    for (const auto& variant : {std::vector<std::string>{}, std::vector<std::string>{"--ascii", "--4e"}}) {
+        auto base = target(sim.tcp_port()) + variant;
+        auto w = run_cli(base + std::vector<std::string>{"label", "write", "LabelW", "5"});
+        INFO(w.err);
+        REQUIRE(w.exit_code == 0);
+        REQUIRE(run_cli(base + std::vector<std::string>{"label", "write", "DDD[0]", "1", "-2", "3"}).exit_code == 0);
+        REQUIRE(run_cli(base + std::vector<std::string>{"label", "write", "Title", "Hello"}).exit_code == 0);
+        REQUIRE(run_cli(base + std::vector<std::string>{"label", "write", "Speed", "1.5"}).exit_code == 0);
+        auto json = json_of(run_cli(base + std::vector<std::string>{"--json", "label", "read", "LabelW", "DDD[0]:3",
+                                                                    "Title", "Speed"}));
+        CHECK(json["values"] == nlohmann::json::parse(R"J([
+            {"label": "LabelW", "type": "Word [Signed]", "value": 5},
+            {"label": "DDD[0]", "type": "Word [Signed]", "value": 1},
+            {"label": "DDD[0]+1", "type": "Word [Signed]", "value": -2},
+            {"label": "DDD[0]+2", "type": "Word [Signed]", "value": 3},
+            {"label": "Title", "type": "String", "value": "Hello"},
+            {"label": "Speed", "type": "FLOAT [Single Precision]", "value": 1.5}])J"));
+        // A value out of the type's range is a usage error (exit 2); a hidden label is the PLC's 40C0 (exit 1).
+        CHECK(run_cli(base + std::vector<std::string>{"label", "write", "LabelW", "40000"}).exit_code == 2);
+        auto hidden = run_cli(base + std::vector<std::string>{"label", "read", "Hidden"});
+        CHECK(hidden.exit_code == 1);
+        CHECK_THAT(hidden.err, Catch::Contains("40C0"));
+    }
 }
