@@ -123,6 +123,33 @@ struct PersistenceConfig {
     bool restore_all = false;              // false: only latched devices come back (a power cycle)
 };
 
+// Global labels as declared (docs/labels.md): a "labels" and a "structures"
+// section, a --labels file (the same JSON, or a GX Works3 CSV list). Kept as
+// text until declare_labels() builds the CPU's LabelTable against its device
+// sizes; `where` prefixes say which file and JSON pointer (or CSV line) an
+// error is about, e.g. "labels.json: /labels/2".
+struct LabelMemberEntry {
+    std::string name, type;
+    std::vector<std::uint32_t> dims;
+    std::string where;
+};
+struct StructureEntry {
+    std::string name;
+    std::vector<LabelMemberEntry> members;
+    std::string where;
+};
+struct LabelEntry {
+    std::string name, type, device;
+    std::vector<std::uint32_t> dims;
+    bool external = true;                  // "Access from External Device": on unless declared off
+    std::string where;                     // the entry
+    std::string type_key = "/type", device_key = "/device";   // appended to `where` (CSV: column names)
+};
+struct LabelsConfig {
+    std::vector<StructureEntry> structures;
+    std::vector<LabelEntry> labels;
+};
+
 struct ServerConfig {
     std::string profile = "R08CPU";
     std::string bind = "0.0.0.0";
@@ -144,6 +171,7 @@ struct ServerConfig {
     double clock_speed = 1;                // the CPU's clock runs this many times faster than the host's
     bool clock_frozen = false;             // --clock frozen: no scan until POST /api/clock/step or PUT /api/clock
     std::string snapshot_file;             // --snapshot: start from a station snapshot saved to a file (docs/ci.md)
+    LabelsConfig labels;                   // "labels", "structures", --labels files
 };
 inline constexpr double kMinClockSpeed = 0.01, kMaxClockSpeed = 1000;
 inline constexpr const char* kClockSpeedFix = "use a factor from 0.01 to 1000 (default 1: real time)";
@@ -151,6 +179,13 @@ inline constexpr const char* kClockSpeedFix = "use a factor from 0.01 to 1000 (d
 // Reads a configuration file; keys left out keep the defaults above.
 ServerConfig load_server_config(const std::filesystem::path& file);
 ServerConfig parse_server_config(const std::string& json_text, const std::string& source);
+
+// A --labels file: JSON with "labels" and/or "structures" (like the
+// configuration's sections), or a CSV global-label list (name ends in .csv).
+LabelsConfig load_labels_file(const std::filesystem::path& file);
+// Declares the labels on CPU No.1: types, devices (kind, range, overlap), the
+// label area. Throws ConfigError naming the file, the key and the fix.
+void declare_labels(devicemodel::Cpu& cpu, const LabelsConfig& labels);
 
 // The profile named by the configuration, with its device-size overrides applied.
 Profile resolve_profile(const ServerConfig& config);

@@ -26,5 +26,10 @@ std::vector<InitialValue> parse_initial_values(const JsonAt& devices);
 void parse_hardware(const JsonAt& root, ServerConfig& config);
 // "cpu", "state_dir", "snapshot_interval_s", "restore" (cpu_config.cpp).
 void parse_cpu_runtime(const JsonAt& root, ServerConfig& config);
+// "labels" (a list, or the name of a CSV file) and "structures" (label_config.cpp);
+// `directory` is where a relative CSV name is looked for.
+void parse_labels(const JsonAt& root, const std::filesystem::path& directory, LabelsConfig& labels);
+// A GX Works3 global-label list exported as CSV (label_csv.cpp).
+LabelsConfig parse_labels_csv(const std::string& text, const std::string& source);
 
 }  // namespace slmp::config

@@ -18,6 +18,7 @@ public:
 
     const nlohmann::json& json() const { return value_; }
     const std::string& pointer() const { return pointer_; }
+    const std::string& source() const { return source_; }
 
     [[noreturn]] void fail(std::string_view problem, std::string_view fix) const;
 

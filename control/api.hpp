@@ -40,6 +40,7 @@ void add_device_endpoints(Router& router, Api& api);       // /api/devices/{addr
 void add_wait_endpoints(Router& router, Api& api);         // /api/devices/{address}/wait
 void add_snapshot_endpoints(Router& router, Api& api);     // /api/snapshots[/{name}[/restore|/file]], /api/reset
 void add_clock_endpoints(Router& router, Api& api);        // /api/clock[/step]
+void add_label_endpoints(Router& router, Api& api);        // /api/labels[/{name}]
 void add_buffer_endpoints(Router& router, Api& api);       // /api/buffer[/{module}/{address}]
 void add_scenario_endpoints(Router& router, Api& api);     // /api/scenarios[/{name}]
 void add_fault_endpoints(Router& router, Api& api);        // /api/faults[/{name}]

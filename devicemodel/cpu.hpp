@@ -8,6 +8,7 @@
 
 #include "devicemodel/cpu_profile.hpp"
 #include "devicemodel/device_memory.hpp"
+#include "devicemodel/labels.hpp"
 #include "devicemodel/runtime.hpp"
 
 namespace slmp::devicemodel {
@@ -48,6 +49,10 @@ public:
 
     // Operating state, scan cycle, timers, special registers, remote password
     // (devicemodel/runtime.hpp); its operations take memory() explicitly.
+    // Global labels (devicemodel/labels.hpp); their values live in memory().
+    LabelTable& labels() { return labels_; }
+    const LabelTable& labels() const { return labels_; }
+
     Runtime& runtime() { return runtime_; }
     const Runtime& runtime() const { return runtime_; }
 
@@ -59,6 +64,7 @@ private:
     std::unique_ptr<DeviceMemory> station_buffer_;
     std::map<std::uint16_t, std::unique_ptr<Module>> modules_;
     std::map<std::uint16_t, std::unique_ptr<DeviceMemory>> networks_;
+    LabelTable labels_;
     Runtime runtime_{profile_.family};
 };
 

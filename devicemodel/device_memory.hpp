@@ -62,10 +62,23 @@ public:
 
     void set_write_observer(WriteObserver* observer) { observer_ = observer; }
 
+    // The label area: words the CPU owns for global labels that are not
+    // assigned to a device (devicemodel/labels.hpp lays them out). It lives
+    // here, beside the devices, so that snapshots and persistence save and
+    // restore labels with the rest of memory. Not reachable by any device code.
+    std::uint32_t label_area_words() const { return static_cast<std::uint32_t>(label_area_.size()); }
+    void resize_label_area(std::uint32_t words) { label_area_.resize(words, 0); }
+    std::uint16_t label_word(std::uint32_t index) const { return index < label_area_.size() ? label_area_[index] : 0; }
+    void set_label_word(std::uint32_t index, std::uint16_t value) {
+        if (index < label_area_.size()) label_area_[index] = value;
+    }
+
     // Same sizes and every stored value the same; the observer is not compared.
     // A copy and this make a cheap before/after snapshot (fuzz_http checks that
     // a refused request wrote nothing).
-    bool operator==(const DeviceMemory& other) const { return sizes_ == other.sizes_ && stores_ == other.stores_; }
+    bool operator==(const DeviceMemory& other) const {
+        return sizes_ == other.sizes_ && stores_ == other.stores_ && label_area_ == other.label_area_;
+    }
 
 private:
     struct Store {
@@ -80,6 +93,7 @@ private:
 
     DeviceSizes sizes_;
     std::vector<Store> stores_;
+    std::vector<std::uint16_t> label_area_;
     WriteObserver* observer_ = nullptr;
 };
 

@@ -18,6 +18,12 @@ std::uint64_t fnv1a(std::span<const std::uint8_t> bytes) {
     return h;
 }
 
+// The label area (DeviceMemory::label_area_words) travels as one more area
+// entry under a name no device has: files without it (older versions) restore
+// with the label area left as it is, and an older version reading a newer file
+// skips it with a warning, so the format version stays 1.
+constexpr std::string_view kLabelArea = "LABEL";
+
 bool saved(Area area, SnapshotContents contents) {
     if (area == Area::R) return false;   // R lives in ZR
     return contents == SnapshotContents::WithSystem || (area != Area::SM && area != Area::SD);
@@ -120,7 +126,8 @@ std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::strin
     std::vector<Area> areas;
     for (std::size_t i = 0; i < static_cast<std::size_t>(Area::Count); ++i)
         if (saved(static_cast<Area>(i), contents)) areas.push_back(static_cast<Area>(i));
-    w.u32(static_cast<std::uint32_t>(areas.size()));
+    const bool labels = memory.label_area_words() > 0;
+    w.u32(static_cast<std::uint32_t>(areas.size() + (labels ? 1 : 0)));
     for (auto area : areas) {
         auto size = area == Area::ZR ? std::max(memory.size(Area::ZR), memory.size(Area::R)) : memory.size(area);
         auto parts = stored_parts(area);
@@ -133,6 +140,15 @@ std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::strin
             memory.read_part(*part, values);
             write_values(w, values);
         }
+    }
+    if (labels) {
+        w.name(kLabelArea);
+        w.u32(memory.label_area_words());
+        w.u8(1);
+        w.u8(static_cast<std::uint8_t>(Part::Plain));
+        std::vector<std::uint32_t> values(memory.label_area_words());
+        for (std::uint32_t n = 0; n < values.size(); ++n) values[n] = memory.label_word(n);
+        write_values(w, values);
     }
     w.u64(fnv1a(w.out));
     return std::move(w.out);
@@ -164,6 +180,7 @@ RestoreResult restore_snapshot(std::span<const std::uint8_t> bytes, DeviceMemory
 
     // Decode everything before touching memory: a bad file changes nothing.
     std::vector<SavedArea> areas;
+    std::optional<std::vector<std::uint32_t>> label_area;
     for (std::uint32_t a = 0; a < *count; ++a) {
         auto name = r.name();
         auto size = r.u32();
@@ -181,7 +198,9 @@ RestoreResult restore_snapshot(std::span<const std::uint8_t> bytes, DeviceMemory
                 for (const auto* s : stored_parts(*area))
                     if (static_cast<std::uint8_t>(s->part) == *part) spec = s;
             if (spec) saved_area.parts.push_back({spec, std::move(*values)});
+            else if (*name == kLabelArea) label_area = std::move(*values);
         }
+        if (*name == kLabelArea) continue;
         if (!area) result.warnings.push_back("device area " + *name + " is unknown to this version; skipped");
         else areas.push_back(std::move(saved_area));
     }
@@ -201,6 +220,16 @@ RestoreResult restore_snapshot(std::span<const std::uint8_t> bytes, DeviceMemory
             for (std::uint32_t n = 0; n < n_max; ++n)
                 if (latch.latched(a.area, n)) memory.set_value(*part.spec, n, part.values[n]);
         }
+    }
+    // Labels are not latched (a VAR_GLOBAL label starts at 0 after a power
+    // cycle), so only a full restore brings the label area back.
+    if (label_area && scope == RestoreScope::All) {
+        if (label_area->size() != memory.label_area_words())
+            result.warnings.push_back("the label area was saved with " + std::to_string(label_area->size()) +
+                                      " words and is now " + std::to_string(memory.label_area_words()) +
+                                      " (labels were added or removed); the common part was restored");
+        auto n_max = std::min<std::size_t>(label_area->size(), memory.label_area_words());
+        for (std::uint32_t n = 0; n < n_max; ++n) memory.set_label_word(n, static_cast<std::uint16_t>((*label_area)[n]));
     }
     result.ok = true;
     return result;

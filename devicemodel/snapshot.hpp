@@ -8,6 +8,9 @@
 //   "SLMPSNAP" u32 version(1) | u8 n + profile name | u32 areas
 //   per area: u8 n + area name ("D", "T", ...) | u32 size | u8 parts
 //     per part: u8 part | runs of (u32 zeros, u32 literals, literals × u32) covering size
+//   the label area (DeviceMemory::label_area_words, when not empty) is one more
+//   such entry named "LABEL" (size = words, one part 0); it comes back with
+//   RestoreScope::All only (labels are not latched)
 //   u64 FNV-1a of everything before it
 #pragma once
 

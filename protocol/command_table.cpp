@@ -20,6 +20,9 @@ constexpr Families kAll = 0xFF;
 constexpr Families kNotQL = kAll & ~(family_bit(Family::QnU) | family_bit(Family::L));
 constexpr Families kNotFx5 = kAll & ~family_bit(Family::IQF);
 constexpr Families kNotQLFx5 = kNotQL & kNotFx5;
+// Label commands need GX Works3 global labels in the CPU: iQ-R only
+// (slmp-labels-remote-misc.md §12; Q/L, QJ71E71 and FX5 ports answer C059).
+constexpr Families kIqrOnly = family_bit(Family::IQR);
 
 constexpr std::uint8_t kExt = kExtended;
 constexpr std::uint8_t kCtl = kControlCpuOnly;
@@ -48,6 +51,8 @@ constexpr std::array kCommands = {
     CommandSpec{0x0406, 0x0002, "Read Block (iQ-R form)", block_read, decode_block_read, IQR, Words, 0, kNotQL},
     CommandSpec{0x0406, 0x0080, "Read Block (Q form, extended)", block_read, decode_block_read, Q, Words, kExt, kNotQL},
     CommandSpec{0x0406, 0x0082, "Read Block (iQ-R form, extended)", block_read, decode_block_read, IQR, Words, kExt, kNotQL},
+    CommandSpec{0x041A, 0x0000, "Array Label Read", array_label_read, nullptr, Q, None, 0, kIqrOnly},
+    CommandSpec{0x041C, 0x0000, "Label Read Random", label_read_random, nullptr, Q, None, 0, kIqrOnly},
     CommandSpec{0x0601, 0x0000, "Extend Unit Read", extend_unit_read},
     CommandSpec{0x0613, 0x0000, "Memory Read", memory_read, nullptr, Q, None, kCtl, kNotQLFx5},
     CommandSpec{0x0619, 0x0000, "Self Test (loopback)", self_test, nullptr, Q, None, kCtl, kNotQL},
@@ -93,6 +98,8 @@ constexpr std::array kCommands = {
     CommandSpec{0x1406, 0x0080, "Write Block (Q form, extended)", block_write, decode_block_write, Q, Words, kExt | kW, kNotQL},
     CommandSpec{0x1406, 0x0082, "Write Block (iQ-R form, extended)", block_write, decode_block_write, IQR, Words,
                 kExt | kW, kNotQL},
+    CommandSpec{0x141A, 0x0000, "Array Label Write", array_label_write, nullptr, Q, None, kW, kIqrOnly},
+    CommandSpec{0x141B, 0x0000, "Label Write Random", label_write_random, nullptr, Q, None, kW, kIqrOnly},
     CommandSpec{0x1601, 0x0000, "Extend Unit Write", extend_unit_write, nullptr, Q, None, kW},
     CommandSpec{0x1613, 0x0000, "Memory Write", memory_write, nullptr, Q, None, kCtl | kW, kNotQLFx5},
     CommandSpec{0x1617, 0x0000, "Clear Error", clear_error, nullptr, Q, None, kCtl | kOp},

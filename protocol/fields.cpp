@@ -76,6 +76,12 @@ std::uint8_t FieldReader::u8(std::string_view what) { return static_cast<std::ui
 std::uint16_t FieldReader::u16(std::string_view what) { return static_cast<std::uint16_t>(number(2, what)); }
 std::uint32_t FieldReader::u32(std::string_view what) { return number(4, what); }
 
+std::uint64_t FieldReader::u64(std::string_view what) {
+    auto first = std::uint64_t{number(4, what)};
+    auto second = std::uint64_t{number(4, what)};
+    return codec_ == Codec::Binary ? first | second << 32 : first << 32 | second;
+}
+
 DeviceField FieldReader::device(DeviceForm form, std::string_view what) {
     DeviceField field;
     if (codec_ == Codec::Binary) {
@@ -253,6 +259,12 @@ void FieldWriter::number(std::uint32_t value, std::size_t bytes) {
     } else {
         append_hex(out_, value, static_cast<unsigned>(bytes * 2));
     }
+}
+
+void FieldWriter::u64(std::uint64_t value) {
+    const auto low = static_cast<std::uint32_t>(value), high = static_cast<std::uint32_t>(value >> 32);
+    number(codec_ == Codec::Binary ? low : high, 4);
+    number(codec_ == Codec::Binary ? high : low, 4);
 }
 
 void FieldWriter::device(DeviceForm form, const devicemodel::DeviceAddress& address) {

@@ -70,6 +70,8 @@ public:
     std::uint8_t u8(std::string_view what);
     std::uint16_t u16(std::string_view what);
     std::uint32_t u32(std::string_view what);
+    // A 64-bit value (LREAL labels): 8 bytes little-endian / 16 hex digits, high first.
+    std::uint64_t u64(std::string_view what);
     DeviceField device(DeviceForm form, std::string_view what);
     // The 008x layout (Appendix 1): binary 11 bytes (Q form) / 13 (iQ-R form),
     // ASCII 20 / 28 characters with a 10-digit device number in the iQ-R form.
@@ -115,6 +117,7 @@ public:
     void u8(std::uint8_t value) { number(value, 1); }
     void u16(std::uint16_t value) { number(value, 2); }
     void u32(std::uint32_t value) { number(value, 4); }
+    void u64(std::uint64_t value);
     void device(DeviceForm form, const devicemodel::DeviceAddress& address);
     void extended_device(DeviceForm form, const devicemodel::DeviceAddress& address,
                          const DeviceExtension& extension = {});

@@ -57,6 +57,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("switch", po::value<std::string>(), "the CPU's RUN/STOP switch: RUN (default) or STOP")
         ("state-dir", po::value<std::string>(), "keep device memory here across restarts (see docs/cpu-runtime.md)")
         ("scenario", po::value<std::vector<std::string>>(), "run a scenario file (values that move, logic, faults, replay); repeatable (docs/scenarios.md)")
+        ("labels", po::value<std::vector<std::string>>(), "declare global labels from this JSON or GX Works3 CSV file; repeatable (docs/labels.md)")
         ("record", po::value<std::string>(), "record every request and response to this JSON-lines file (docs/scenarios.md)")
         ("clock-speed", po::value<double>(), "run the CPU's clock (scan, timers, scenarios) this many times faster than real time (default 1)")
         ("clock", po::value<std::string>(), "realtime (default) or frozen: no scan until POST /api/clock/step or PUT /api/clock (docs/ci.md)")
@@ -165,6 +166,12 @@ CommandLine parse_command_line(int argc, char** argv) {
         auto files = vm["scenario"].as<std::vector<std::string>>();
         c.scenarios.insert(c.scenarios.end(), files.begin(), files.end());
     }
+    if (vm.count("labels"))
+        for (const auto& file : vm["labels"].as<std::vector<std::string>>()) {
+            auto more = config::load_labels_file(file);
+            c.labels.structures.insert(c.labels.structures.end(), more.structures.begin(), more.structures.end());
+            c.labels.labels.insert(c.labels.labels.end(), more.labels.begin(), more.labels.end());
+        }
     if (vm.count("record")) c.record_file = vm["record"].as<std::string>();
     if (vm.count("record-pcap")) c.record_pcap_file = vm["record-pcap"].as<std::string>();
     if (vm.count("clock-speed")) {

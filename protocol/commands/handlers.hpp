@@ -40,6 +40,12 @@ EndCode memory_write(CommandContext& ctx);
 EndCode extend_unit_read(CommandContext& ctx);
 EndCode extend_unit_write(CommandContext& ctx);
 
+// labels.cpp — Array Label Read/Write 041A/141A, Label Read/Write Random 041C/141B.
+EndCode array_label_read(CommandContext& ctx);
+EndCode array_label_write(CommandContext& ctx);
+EndCode label_read_random(CommandContext& ctx);
+EndCode label_write_random(CommandContext& ctx);
+
 // cpu_model.cpp — Read Type Name 0101.
 EndCode read_type_name(CommandContext& ctx);
 EndCode read_pc_type_1e(CommandContext& ctx);   // 1E 15

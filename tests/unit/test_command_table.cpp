@@ -55,7 +55,7 @@ TEST_CASE("command table: device commands have a decoder; the write ones are fla
     // Everything else that writes memory: buffer memory, and the remote
     // operations that clear devices (RUN with a clear mode, Latch Clear, RESET).
     CHECK(commands_where(&CommandSpec::writes) ==
-          std::set<std::uint16_t>{0x1001, 0x1005, 0x1006, 0x1401, 0x1402, 0x1406, 0x1601, 0x1613});
+          std::set<std::uint16_t>{0x1001, 0x1005, 0x1006, 0x1401, 0x1402, 0x1406, 0x141A, 0x141B, 0x1601, 0x1613});
 }
 
 TEST_CASE("command table: the device form and the extended layout follow the subcommand", "[table]") {
@@ -74,11 +74,16 @@ TEST_CASE("command table: the device form and the extended layout follow the sub
 
 TEST_CASE("command table: which port families refuse which commands (hardware-behaviour.md §4)", "[table]") {
     CHECK(commands_refused_by(Family::IQR).empty());
-    CHECK(commands_refused_by(Family::QJ71E71).empty());
-    const std::set<std::uint16_t> built_in_q_l{0x0101, 0x0406, 0x0613, 0x0619, 0x1406, 0x1613};
+    // Label commands: iQ-R CPUs only (slmp-labels-remote-misc.md §12).
+    const std::set<std::uint16_t> labels{0x041A, 0x041C, 0x141A, 0x141B};
+    CHECK(commands_refused_by(Family::QJ71E71) == labels);
+    std::set<std::uint16_t> built_in_q_l{0x0101, 0x0406, 0x0613, 0x0619, 0x1406, 0x1613};
+    built_in_q_l.insert(labels.begin(), labels.end());
     CHECK(commands_refused_by(Family::QnU) == built_in_q_l);
     CHECK(commands_refused_by(Family::L) == built_in_q_l);
-    CHECK(commands_refused_by(Family::IQF) == std::set<std::uint16_t>{0x0613, 0x0801, 0x0802, 0x1613});
+    std::set<std::uint16_t> fx5{0x0613, 0x0801, 0x0802, 0x1613};
+    fx5.insert(labels.begin(), labels.end());
+    CHECK(commands_refused_by(Family::IQF) == fx5);
 }
 
 TEST_CASE("command table: find_command and find_any_row", "[table]") {
@@ -87,5 +92,9 @@ TEST_CASE("command table: find_command and find_any_row", "[table]") {
     CHECK_FALSE(find_command(0x0403, 0x0001));   // Read Random has no bit units
     REQUIRE(find_any_row(0x0403));
     CHECK(find_any_row(0x0403)->command == 0x0403);
-    CHECK_FALSE(find_any_row(0x041A));   // labels: not yet in the table
+    REQUIRE(find_command(0x041A, 0x0000));
+    CHECK(find_command(0x041A, 0x0000)->name == "Array Label Read");
+    CHECK_FALSE(find_command(0x041A, 0x0001));   // labels: subcommand 0000 only
+    CHECK(find_command(0x141B, 0x0000)->writes());
+    CHECK_FALSE(find_any_row(0x0E30));
 }

@@ -13,6 +13,7 @@
 #include "protocol/command_table.hpp"
 #include "support/device_commands.hpp"
 #include "support/generated_section.hpp"
+#include "support/labels.hpp"
 
 using namespace slmp;
 using namespace slmp::test;
@@ -32,8 +33,6 @@ struct Row {
 // Commands of the spec the simulator does not implement yet: they must be
 // refused with the profile's "not supported" code, never answered 0000.
 const Row kNotImplemented[] = {
-    {0x041A, 0x0000, "Array Label Read"},       {0x141A, 0x0000, "Array Label Write"},
-    {0x041C, 0x0000, "Label Read Random"},      {0x141B, 0x0000, "Label Write Random"},
     {0x1810, 0x0000, "Read Directory/File"},    {0x1827, 0x0000, "Open File"},
 };
 
@@ -75,6 +74,11 @@ Probe probe_for(const Row& row, const devicemodel::CpuProfile& profile) {
         case 0x0601: return {{}, extend_unit_read_req(0x1008, 2, 3)};
         case 0x1601: return {{}, extend_unit_write_req(0x1008, 3, {1, 2})};
         case 0x0613: return {{}, memory_read_req(0, 1)};
+        // The label "W" (INT) that cpu_for declares.
+        case 0x041A: return {{}, array_read_req({{"W", 1, 2}})};
+        case 0x141A: return {{}, array_write_req({{"W", 1, 2, word(7)}})};
+        case 0x041C: return {{}, random_label_read_req({"W"})};
+        case 0x141B: return {{}, random_label_write_req({{"W", 2, word(7)}})};
         case 0x1613: return {{}, memory_write_req(0, {7})};
         case 0x0101: return {{}, head};
         case 0x0619: return {{}, head + word(5) + Payload{"41 42 43 44 45", "ABCDE"}};
@@ -94,6 +98,11 @@ Probe probe_for(const Row& row, const devicemodel::CpuProfile& profile) {
 devicemodel::Cpu cpu_for(const std::string& profile_name) {
     auto cpu = make_cpu(profile_name);
     cpu.add_module(3, "Q62DA", 4096, 0x1008);   // U3 for 0601/1601
+    config::LabelsConfig labels;                 // "W" for 041A/141A/041C/141B
+    labels.labels.emplace_back();
+    labels.labels.back().name = "W";
+    labels.labels.back().type = "INT";
+    config::declare_labels(cpu, labels);
     devicemodel::RuntimeConfig c;
     c.remote_reset_enabled = true;
     if (cpu.profile().password_max_length) c.password = password_for(cpu.profile());

@@ -7,13 +7,15 @@ namespace slmp::cli {
 namespace {
 
 // clang-format off
-const std::array<CommandSpec, 13> kCommands = {{
+const std::array<CommandSpec, 14> kCommands = {{
     {"read", "DEVICE [POINTS]", "0401 Device Read: POINTS words (default 1), or bits with --bits", {"bits"}, run_read},
     {"write", "DEVICE VALUE...", "1401 Device Write: words (-32768..65535, 0x..), or 0/1 with --bits", {"bits"}, run_write},
     {"random", "read|write ITEM...", "0403 Read Random / 1402 Write Random: read D0 M100 --dword D200; "
                                      "write D0=1 --dword D200=70000; write --bits M0=1 Y2F=0", {"bits", "dword"}, run_random},
     {"monitor", "ITEM...", "poll D100, M0, D100-D109 ... with 0401 every --interval until Ctrl-C or --count",
                            {"interval", "count"}, run_monitor},
+    {"label", "read|write NAME...", "041C/041A label read: LabelW DDD[0]:20; 141B/141A label write: LabelW 5, "
+                                    "DDD[0] 1 2 3 (docs/labels.md)", {}, run_label},
     {"run", "", "1001 Remote RUN (--force: mode 0003; --clear none|nonlatch|all)", {"force", "clear"}, run_remote_run},
     {"stop", "", "1002 Remote STOP", {}, run_remote_stop},
     {"pause", "", "1003 Remote PAUSE (--force: mode 0003)", {"force"}, run_remote_pause},

@@ -1,7 +1,7 @@
 // The slmp subcommands: one table, one row each (name, usage, the command
 // options it accepts, the function that runs it). Each family lives in its own
 // file: device_commands.cpp (read, write), random_commands.cpp, monitor_command.cpp,
-// remote_commands.cpp (run, stop, pause, reset, latch-clear), info_commands.cpp
+// label_commands.cpp, remote_commands.cpp (run, stop, pause, reset, latch-clear), info_commands.cpp
 // (type, selftest), password_commands.cpp (lock, unlock).
 #pragma once
 
@@ -41,6 +41,7 @@ void run_read(Invocation& in);
 void run_write(Invocation& in);
 void run_random(Invocation& in);
 void run_monitor(Invocation& in);
+void run_label(Invocation& in);
 void run_remote_run(Invocation& in);
 void run_remote_stop(Invocation& in);
 void run_remote_pause(Invocation& in);
