@@ -71,6 +71,10 @@ public:
     void on_opened(const station::Connection& connection) override;
     void on_closed(const station::Connection& connection, std::string_view why) override;
     void written(const devicemodel::DeviceSpec& spec, std::uint32_t first, std::uint32_t count) override;
+    // Label-area words wake the waits; the event stream shows device runs only.
+    void label_area_written(std::uint32_t) override {
+        if (change_listener_) change_listener_();
+    }
 
 private:
     struct Run {

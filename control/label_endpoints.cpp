@@ -1,12 +1,14 @@
 // GET /api/labels                      every global label: type, device, external access
 // GET /api/labels/{name}?count=N       N elements from the named one ("DDD[0]", "Tank1.Level")
 // PUT /api/labels/{name}               {"values": [...]} or {"string": "..."}
+// GET /api/labels/{name}/wait?equals=N  the wait of control/wait_endpoint.hpp on one element
 // Names resolve like SLMP label names (devicemodel/labels.hpp), but the API is
 // the simulator's own: labels without "Access from External Device" are
 // reachable here. docs/api.md, "Labels".
 #include "control/api.hpp"
 #include "control/event_hub.hpp"
 #include "control/value_body.hpp"
+#include "control/wait_endpoint.hpp"
 #include "devicemodel/label_values.hpp"
 #include "devicemodel/labels.hpp"
 
@@ -122,9 +124,38 @@ Reply put_label(Api& api, const ApiRequest& request) {
     return read_reply(api, name, ref, encoded.size());
 }
 
+// A wait on one element of a bit, integer or TIME label. Values are compared
+// as their 32-bit two's-complement patterns, so equals=-1 matches a Word
+// [Signed] of -1; greater/less compare those patterns unsigned, as for devices.
+Reply label_wait(Api& api, const ApiRequest& request) {
+    const auto& name = request.captures.at(0);
+    auto ref = resolve(api, name);
+    auto probe = devicemodel::decode_label_scalar(ref.basic, devicemodel::read_element(api.station.cpu().memory(), ref, 0));
+    if (probe.kind != LabelScalar::Kind::Int)
+        bad("label '" + name + "' holds " + (probe.kind == LabelScalar::Kind::Float ? "a FLOAT" : "a string") +
+            ", which cannot be waited on; wait on a bit, integer or TIME label");
+    devicemodel::LabelType type{devicemodel::LabelType::Kind::Basic, ref.basic, ref.chars};
+    WaitTarget target;
+    target.name = name;
+    target.fields = {{"label", name}, {"type", devicemodel::format_label_type(type)}};
+    target.read = [&api, ref] {
+        auto words = devicemodel::read_element(api.station.cpu().memory(), ref, 0);
+        return static_cast<std::uint32_t>(devicemodel::decode_label_scalar(ref.basic, words).integer);
+    };
+    target.parse = [name](const std::string& text) {
+        auto number = json::parse(text, nullptr, false);
+        if (number.is_discarded() || !(number.is_number_integer() || number.is_boolean()))
+            bad("'" + text + "' is not a number; give an integer such as 5, -1 or, for bits, 0/1");
+        return static_cast<std::uint32_t>(number.is_boolean() ? (number.get<bool>() ? 1 : 0) : number.get<std::int64_t>());
+    };
+    return wait_reply(api, std::move(target), request);
+}
+
 }  // namespace
 
 void add_label_endpoints(Router& router, Api& api) {
+    router.add(Verb::get, "/api/labels/{name}/wait", kWaitParameters,
+               [&api](const ApiRequest& request) { return label_wait(api, request); });
     router.add(Verb::get, "/api/labels", {}, [&api](const ApiRequest&) { return list_labels(api); });
     router.add(Verb::get, "/api/labels/{name}", {"count"},
                [&api](const ApiRequest& request) { return get_label(api, request); });

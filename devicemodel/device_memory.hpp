@@ -19,6 +19,8 @@ namespace slmp::devicemodel {
 class WriteObserver {
 public:
     virtual void written(const DeviceSpec& spec, std::uint32_t first, std::uint32_t count) = 0;
+    // A word of the label area changed (labels not assigned to a device).
+    virtual void label_area_written(std::uint32_t index) { (void)index; }
 
 protected:
     ~WriteObserver() = default;
@@ -70,7 +72,9 @@ public:
     void resize_label_area(std::uint32_t words) { label_area_.resize(words, 0); }
     std::uint16_t label_word(std::uint32_t index) const { return index < label_area_.size() ? label_area_[index] : 0; }
     void set_label_word(std::uint32_t index, std::uint16_t value) {
-        if (index < label_area_.size()) label_area_[index] = value;
+        if (index >= label_area_.size() || label_area_[index] == value) return;
+        label_area_[index] = value;
+        if (observer_) observer_->label_area_written(index);
     }
 
     // Same sizes and every stored value the same; the observer is not compared.

@@ -148,16 +148,7 @@ FrameScan scan_frame(std::span<const std::uint8_t> data, Direction direction, Da
                     static_cast<std::uint16_t>(*module_io), static_cast<std::uint8_t>(*multidrop)};
     h.data_length = static_cast<std::uint16_t>(*length);
     scan.size = h.header_size + h.data_length;
-    if (scan.size > max_frame_bytes) {
-        scan.status = FrameScan::Status::TooLarge;
-        return scan;
-    }
-    if (data.size() < scan.size) {
-        scan.needed = scan.size;
-        return scan;
-    }
-    scan.status = FrameScan::Status::Complete;
-    return scan;
+    return settle(scan, data.size(), max_frame_bytes);
 }
 
 std::string_view to_string(Codec codec) { return codec == Codec::Binary ? "binary" : "ASCII"; }
@@ -169,6 +160,19 @@ std::string_view to_string(FrameKind kind) {
         case FrameKind::Ext: break;
     }
     return "station-number-extended";
+}
+
+FrameScan settle(FrameScan scan, std::size_t available, std::size_t max_frame_bytes) {
+    if (scan.size > max_frame_bytes) {
+        scan.status = FrameScan::Status::TooLarge;
+        return scan;
+    }
+    if (available < scan.size) {
+        scan.needed = scan.size;
+        return scan;
+    }
+    scan.status = FrameScan::Status::Complete;
+    return scan;
 }
 
 }  // namespace slmp::protocol

@@ -75,6 +75,9 @@ struct FrameScan {
 
 FrameScan scan_frame(std::span<const std::uint8_t> data, Direction direction, DataCodePolicy policy,
                      std::size_t max_frame_bytes, FrameSet frames = {});
+// The end of every frame shape's scan, once `scan.size` is known: TooLarge
+// past the maximum, NeedMore until `available` bytes hold it, else Complete.
+FrameScan settle(FrameScan scan, std::size_t available, std::size_t max_frame_bytes);
 
 // Size of the fixed header up to and including the data length field.
 std::size_t header_size(FrameKind kind, Codec codec);

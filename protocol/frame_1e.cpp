@@ -148,16 +148,7 @@ std::optional<FrameScan> scan_1e(std::span<const std::uint8_t> data, DataCodePol
     scan.size = fixed + extra * unit + (row->layout == Loopback ? *count : 0);
     h.route = Route{0x00, static_cast<std::uint8_t>(*pc), 0x03FF, 0x00};
     h.data_length = static_cast<std::uint16_t>(std::min<std::size_t>(scan.size - h.header_size, 0xFFFF));
-    if (scan.size > max_frame_bytes) {
-        scan.status = FrameScan::Status::TooLarge;
-        return scan;
-    }
-    if (data.size() < scan.size) {
-        scan.needed = scan.size;
-        return scan;
-    }
-    scan.status = FrameScan::Status::Complete;
-    return scan;
+    return settle(scan, data.size(), max_frame_bytes);
 }
 
 // 1E end codes (QJ71E71 A-compatible 1E frame; docs/frames.md says which are

@@ -18,6 +18,12 @@ public:
             what = std::string(spec.symbol) + std::to_string(first);
         }
     }
+    void label_area_written(std::uint32_t index) override {
+        if (!changed) {
+            changed = true;
+            what = "label area word " + std::to_string(index);
+        }
+    }
     bool changed = false;
     std::string what;   // the first device changed, e.g. "D100"
 };

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "frames.hpp"
+#include "protocol/client_labels.hpp"
 #include "http_client.hpp"
 #include "link.hpp"
 #include "sim_process.hpp"
@@ -302,6 +303,49 @@ TEST_CASE("wait: answers when an SLMP write lands, 408 with the last value at th
     CHECK(http_get(port, "/api/devices/D100/wait?equals=1&timeout=5").error() ==
           "unknown query parameter 'timeout' for /api/devices/D100/wait; use equals, not_equals, greater, less, changes, "
           "timeout_ms, as");
+}
+
+TEST_CASE("wait on a label: in the label area and on a device, woken by 141B; FLOAT refused", "[ci][wait][labels]") {
+    SimOptions options;
+    options.config_json = R"({"labels": [{"name": "Count", "type": "Word [Signed]"},
+                                         {"name": "LabelW", "type": "Word [Signed]", "device": "D9000"},
+                                         {"name": "Speed", "type": "FLOAT [Single Precision]"}]})";
+    SimProcess sim(options);
+    const auto port = sim.http_port();
+    TcpLink link(sim.tcp_port());
+    auto write_label = [&](const std::string& name, std::uint16_t value) {
+        client::LabelWrite write{name, {slmp::devicemodel::BasicType::Word, {value}}};
+        return ask(link, client::label_write_random(kBin.options(), std::span(&write, 1)));
+    };
+
+    // A label in the label area: only the label area changes, and that wakes the wait.
+    auto area = send_request(port, "/api/labels/Count/wait?equals=-1&timeout_ms=600000");
+    REQUIRE(write_label("Count", 0xFFFF) == show(ok(kBin)));
+    auto answered = read_response(area);
+    CHECK(answered.status == 200);
+    CHECK(answered.json()["label"] == "Count");
+    CHECK(answered.json()["condition"] == "equals -1");
+
+    // A label on D9000: the device write wakes it.
+    auto on_device = send_request(port, "/api/labels/LabelW/wait?changes&timeout_ms=600000");
+    REQUIRE(write_label("LabelW", 7) == show(ok(kBin)));
+    CHECK(read_response(on_device).status == 200);
+    CHECK(words(port, "/api/devices/D9000") == json::array({7}));
+
+    auto timeout = http_get(port, "/api/labels/LabelW/wait?equals=8&timeout_ms=50");
+    CHECK(timeout.status == 408);
+    CHECK(timeout.json()["value"] == 7);
+    CHECK(http_get(port, "/api/labels/Speed/wait?equals=1").error() ==
+          "label 'Speed' holds a FLOAT, which cannot be waited on; wait on a bit, integer or TIME label");
+    CHECK(http_get(port, "/api/labels/Nope/wait?equals=1").status == 404);
+
+    // Labels are in a snapshot: both kinds come back with a restore.
+    REQUIRE(post(port, "/api/snapshots", R"({"name": "labels"})").status == 201);
+    REQUIRE(write_label("Count", 42) == show(ok(kBin)));
+    REQUIRE(write_label("LabelW", 43) == show(ok(kBin)));
+    REQUIRE(post(port, "/api/snapshots/labels/restore").status == 200);
+    CHECK(http_get(port, "/api/labels/Count").json()["values"] == json::array({-1}));
+    CHECK(http_get(port, "/api/labels/LabelW").json()["values"] == json::array({7}));
 }
 
 TEST_CASE("check-config: exit 0 for a good file, 2 with the one-line error for a bad one", "[ci][cli]") {
