@@ -30,9 +30,12 @@ json body_object(const std::string& text, std::initializer_list<const char*> key
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) return json::object();
     auto body = json::parse(text, nullptr, false);
     if (body.is_discarded() || !body.is_object()) bad("the body must be a JSON object such as " + example);
-    for (const auto& [key, _] : body.items())
+    for (const auto& item : body.items()) {
+        // Not a structured binding: clang 14 cannot capture one in the lambda.
+        const auto& key = item.key();
         if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return key == k; }) == keys.end())
             bad("unknown key \"" + key + "\" in the body; send " + example);
+    }
     return body;
 }
 
