@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "config/builtin_profiles.hpp"
 #include "config/config.hpp"
 #include "config/json_path.hpp"
 
@@ -17,6 +18,10 @@ struct ProfileSource {
     std::string name;
     std::filesystem::path directory;
 };
+// A built-in profile by name, case-insensitive (null when none has it), and
+// their names as "FX5U-32MR, L26CPU-BT, ..." for messages (profile_loader.cpp).
+const BuiltinProfile* find_builtin_profile(const std::string& name);
+std::string builtin_profile_list();
 // The profile's JSON with its "extends" chain resolved (profile_inheritance.cpp).
 nlohmann::json resolve_profile_json(const std::string& json_text, const ProfileSource& source);
 

@@ -4,12 +4,10 @@
 // one size and keeps the others), anything else — strings, numbers, arrays —
 // replaces the base's value. A base may itself extend another; a cycle or an
 // unknown base stops with the chain that led there.
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "config/builtin_profiles.hpp"
 #include "config/config.hpp"
 #include "config/config_parts.hpp"
 
@@ -28,11 +26,6 @@ void lay_over(nlohmann::json& base, const nlohmann::json& over) {
     }
 }
 
-std::string upper(std::string text) {
-    for (auto& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return text;
-}
-
 // The base's text and how to name it: a built-in profile by name, or (only
 // for profiles read from files) a file relative to the extending one.
 std::pair<std::string, ProfileSource> find_base(const JsonAt& at, const ProfileSource& from) {
@@ -48,11 +41,8 @@ std::pair<std::string, ProfileSource> find_base(const JsonAt& at, const ProfileS
         text << file.rdbuf();
         return {text.str(), {path.string(), path.parent_path()}};
     }
-    for (const auto& p : builtin_profiles())
-        if (upper(std::string(p.name)) == upper(name)) return {std::string(p.json), {"profile " + std::string(p.name), {}}};
-    std::string list;
-    for (const auto& n : builtin_profile_names()) list += (list.empty() ? "" : ", ") + n;
-    at.fail("unknown base profile '" + name + "'", "extend one of: " + list + " (or a .json file)");
+    if (const auto* p = find_builtin_profile(name)) return {std::string(p->json), {"profile " + std::string(p->name), {}}};
+    at.fail("unknown base profile '" + name + "'", "extend one of: " + builtin_profile_list() + " (or a .json file)");
 }
 
 nlohmann::json resolve(const std::string& json_text, const ProfileSource& source, std::vector<std::string>& chain) {

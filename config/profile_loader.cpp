@@ -197,6 +197,18 @@ std::vector<std::string> builtin_profile_names() {
     return names;
 }
 
+const BuiltinProfile* find_builtin_profile(const std::string& name) {
+    for (const auto& p : builtin_profiles())
+        if (upper(std::string(p.name)) == upper(name)) return &p;
+    return nullptr;
+}
+
+std::string builtin_profile_list() {
+    std::string list;
+    for (const auto& n : builtin_profile_names()) list += (list.empty() ? "" : ", ") + n;
+    return list;
+}
+
 Profile load_profile(const std::string& name_or_path) {
     bool is_path = name_or_path.find('/') != std::string::npos ||
                    (name_or_path.size() > 5 && name_or_path.ends_with(".json"));
@@ -207,12 +219,10 @@ Profile load_profile(const std::string& name_or_path) {
         text << file.rdbuf();
         return parse_profile(text.str(), name_or_path, std::filesystem::path(name_or_path).parent_path());
     }
-    for (const auto& p : builtin_profiles())
-        if (upper(std::string(p.name)) == upper(name_or_path))
-            return parse_profile(std::string(p.json), "profile " + std::string(p.name));
-    std::string list;
-    for (const auto& n : builtin_profile_names()) list += (list.empty() ? "" : ", ") + n;
-    throw ConfigError("unknown profile '" + name_or_path + "'; use one of: " + list + " (or a path to a profile .json file)");
+    if (const auto* p = find_builtin_profile(name_or_path))
+        return parse_profile(std::string(p->json), "profile " + std::string(p->name));
+    throw ConfigError("unknown profile '" + name_or_path + "'; use one of: " + builtin_profile_list() +
+                      " (or a path to a profile .json file)");
 }
 
 }  // namespace slmp::config

@@ -90,6 +90,22 @@ void apply_writes(CommandContext& ctx, const std::vector<Write>& writes) {
             devicemodel::write_element(ctx.cpu.memory(), w.ref, i, w.elements[i]);
 }
 
+// What every label command starts with: the 1920-byte limit on the request
+// data, the point count (0 is refused) and the abbreviation definitions.
+struct Preamble {
+    std::uint16_t points = 0;
+    std::vector<std::string> abbreviations;
+};
+
+EndCode read_preamble(CommandContext& ctx, const char* points_field, Preamble& out) {
+    if (ctx.in.remaining() > kMaxDataBytes) return EndCode::RequestTooLarge;
+    out.points = ctx.in.u16(points_field);
+    out.abbreviations = read_abbreviations(ctx.in);
+    if (!ctx.in.ok()) return ctx.in.error();
+    if (out.points == 0) return EndCode::BadRequestContent;
+    return EndCode::Ok;
+}
+
 EndCode finish_response(CommandContext& ctx) {
     return ctx.out.bytes().size() > kMaxDataBytes ? EndCode::ResponseTooLarge : EndCode::Ok;
 }
@@ -97,11 +113,10 @@ EndCode finish_response(CommandContext& ctx) {
 }  // namespace
 
 EndCode array_label_read(CommandContext& ctx) {
-    if (ctx.in.remaining() > kMaxDataBytes) return EndCode::RequestTooLarge;
-    auto points = ctx.in.u16("array points");
-    auto abbreviations = read_abbreviations(ctx.in);
-    if (!ctx.in.ok()) return ctx.in.error();
-    if (points == 0) return EndCode::BadRequestContent;
+    Preamble preamble;
+    if (auto code = read_preamble(ctx, "array points", preamble); code != EndCode::Ok) return code;
+    const auto points = preamble.points;
+    const auto& abbreviations = preamble.abbreviations;
     struct Entry {
         LabelRef ref;
         std::uint8_t unit;
@@ -144,11 +159,10 @@ EndCode array_label_read(CommandContext& ctx) {
 }
 
 EndCode array_label_write(CommandContext& ctx) {
-    if (ctx.in.remaining() > kMaxDataBytes) return EndCode::RequestTooLarge;
-    auto points = ctx.in.u16("array points");
-    auto abbreviations = read_abbreviations(ctx.in);
-    if (!ctx.in.ok()) return ctx.in.error();
-    if (points == 0) return EndCode::BadRequestContent;
+    Preamble preamble;
+    if (auto code = read_preamble(ctx, "array points", preamble); code != EndCode::Ok) return code;
+    const auto points = preamble.points;
+    const auto& abbreviations = preamble.abbreviations;
     std::vector<Write> writes;
     for (std::uint16_t p = 0; p < points; ++p) {
         auto name = read_name(ctx.in);
@@ -179,11 +193,10 @@ EndCode array_label_write(CommandContext& ctx) {
 }
 
 EndCode label_read_random(CommandContext& ctx) {
-    if (ctx.in.remaining() > kMaxDataBytes) return EndCode::RequestTooLarge;
-    auto points = ctx.in.u16("read data points");
-    auto abbreviations = read_abbreviations(ctx.in);
-    if (!ctx.in.ok()) return ctx.in.error();
-    if (points == 0) return EndCode::BadRequestContent;
+    Preamble preamble;
+    if (auto code = read_preamble(ctx, "read data points", preamble); code != EndCode::Ok) return code;
+    const auto points = preamble.points;
+    const auto& abbreviations = preamble.abbreviations;
     std::vector<LabelRef> refs(points);
     for (auto& ref : refs) {
         auto name = read_name(ctx.in);
@@ -203,11 +216,10 @@ EndCode label_read_random(CommandContext& ctx) {
 }
 
 EndCode label_write_random(CommandContext& ctx) {
-    if (ctx.in.remaining() > kMaxDataBytes) return EndCode::RequestTooLarge;
-    auto points = ctx.in.u16("write data points");
-    auto abbreviations = read_abbreviations(ctx.in);
-    if (!ctx.in.ok()) return ctx.in.error();
-    if (points == 0) return EndCode::BadRequestContent;
+    Preamble preamble;
+    if (auto code = read_preamble(ctx, "write data points", preamble); code != EndCode::Ok) return code;
+    const auto points = preamble.points;
+    const auto& abbreviations = preamble.abbreviations;
     std::vector<Write> writes;
     for (std::uint16_t p = 0; p < points; ++p) {
         auto name = read_name(ctx.in);
