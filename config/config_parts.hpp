@@ -27,6 +27,9 @@ nlohmann::json resolve_profile_json(const std::string& json_text, const ProfileS
 
 std::vector<std::pair<devicemodel::Area, std::uint32_t>> parse_device_sizes(const JsonAt& sizes);
 std::vector<InitialValue> parse_initial_values(const JsonAt& devices);
+// One entry of such an object: "D100": 5 (also used by scenarios' "set", which
+// lets labels sit beside devices).
+InitialValue parse_initial_value(const std::string& address, const JsonAt& at);
 // "modules", "networks" and "cpus" (hardware_config.cpp).
 void parse_hardware(const JsonAt& root, ServerConfig& config);
 // "cpu", "state_dir", "snapshot_interval_s", "restore" (cpu_config.cpp).

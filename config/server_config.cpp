@@ -47,10 +47,32 @@ PortConfig port(const JsonAt& at) {
     return p;
 }
 
+HttpConfig http_config(const JsonAt& at) {
+    at.only_keys({"enabled", "port", "bind"});
+    HttpConfig h;
+    if (at.has("enabled")) h.enabled = at["enabled"].boolean();
+    if (at.has("port")) h.port = static_cast<std::uint16_t>(at["port"].unsigned_int(65535));
+    if (at.has("bind")) h.bind = at["bind"].string();
+    return h;
+}
+
+}  // namespace
+
+std::vector<std::pair<Area, std::uint32_t>> parse_device_sizes(const JsonAt& sizes) {
+    sizes.expect_object();
+    std::vector<std::pair<Area, std::uint32_t>> list;
+    for (const auto& [name, _] : sizes.json().items()) {
+        auto a = devicemodel::area_by_name(name);
+        if (!a) sizes[name].fail("unknown device '" + name + "'", "use a device area such as X, M, D, T, ZR, LZ");
+        list.emplace_back(*a, static_cast<std::uint32_t>(sizes[name].unsigned_int(0x7FFFFFFF)));
+    }
+    return list;
+}
+
 // One device's initial values: a number, a list of numbers (consecutive
 // devices), or for word devices a string packed two characters a word, low
 // byte first (as the manual stores "12AB" in D2-D3).
-InitialValue initial_value(const std::string& address_text, const JsonAt& at) {
+InitialValue parse_initial_value(const std::string& address_text, const JsonAt& at) {
     std::string error;
     auto address = devicemodel::parse_address(address_text, &error);
     if (!address) at.fail(error, "write an address such as D100, M0, X1F, ZR1000");
@@ -81,32 +103,10 @@ InitialValue initial_value(const std::string& address_text, const JsonAt& at) {
     return v;
 }
 
-HttpConfig http_config(const JsonAt& at) {
-    at.only_keys({"enabled", "port", "bind"});
-    HttpConfig h;
-    if (at.has("enabled")) h.enabled = at["enabled"].boolean();
-    if (at.has("port")) h.port = static_cast<std::uint16_t>(at["port"].unsigned_int(65535));
-    if (at.has("bind")) h.bind = at["bind"].string();
-    return h;
-}
-
-}  // namespace
-
-std::vector<std::pair<Area, std::uint32_t>> parse_device_sizes(const JsonAt& sizes) {
-    sizes.expect_object();
-    std::vector<std::pair<Area, std::uint32_t>> list;
-    for (const auto& [name, _] : sizes.json().items()) {
-        auto a = devicemodel::area_by_name(name);
-        if (!a) sizes[name].fail("unknown device '" + name + "'", "use a device area such as X, M, D, T, ZR, LZ");
-        list.emplace_back(*a, static_cast<std::uint32_t>(sizes[name].unsigned_int(0x7FFFFFFF)));
-    }
-    return list;
-}
-
 std::vector<InitialValue> parse_initial_values(const JsonAt& devices) {
     devices.expect_object();
     std::vector<InitialValue> list;
-    for (const auto& [address, _] : devices.json().items()) list.push_back(initial_value(address, devices[address]));
+    for (const auto& [address, _] : devices.json().items()) list.push_back(parse_initial_value(address, devices[address]));
     return list;
 }
 

@@ -27,7 +27,9 @@ struct Checker {
                                   " is outside the " + area + " size of " + std::to_string(memory.size(a.spec->area)) +
                                   " in profile " + profile + "; use a smaller device number or raise device_sizes");
     }
-    void fits(const DeviceRef& d, const std::string& pointer) const { fits(d.address, devices_per_value(d), pointer); }
+    void fits(const DeviceRef& d, const std::string& pointer) const {
+        if (d.label.empty()) fits(d.address, devices_per_value(d), pointer);   // a label was checked when declared
+    }
     void fits(const std::vector<config::InitialValue>& values, const std::string& pointer) const {
         for (const auto& v : values) fits(v.address, static_cast<std::uint32_t>(v.values.size()), pointer);
     }

@@ -11,6 +11,7 @@
 
 namespace slmp::scenarios {
 
+// A bound label (DeviceRef::bound) is read and written through its element.
 // Rounds to the nearest integer and saturates to what the format can hold
 // (Int16: -32768..65535, so both signed and unsigned words can be written).
 void write_number(devicemodel::DeviceMemory& memory, const DeviceRef& device, double value);

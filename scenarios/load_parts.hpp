@@ -21,8 +21,18 @@ double probability(const JsonAt& at);
 devicemodel::DeviceAddress address(const JsonAt& at);
 // The sibling key "as" of `owner` for a device: int16 (default), int32, float.
 ValueFormat value_format(const JsonAt& owner, const devicemodel::DeviceAddress& device);
-// "D100" with the sibling key "as" ("int16", "int32", "float") of `owner`.
+// Whether text that is not a device could be a label name (letter or '_' first).
+bool may_be_label(std::string_view text);
+// "D100" with the sibling key "as" ("int16", "int32", "float") of `owner`, or a
+// label name ("Tank1.Level"), left for bind_labels() to resolve.
 DeviceRef device(const JsonAt& at, const JsonAt& owner);
+// "set": {"D100": 5, "M0": 1, "Tank1.Level": 50}: devices as the config's
+// "devices" writes them, labels with one number each.
+struct SetValues {
+    std::vector<config::InitialValue> devices;
+    std::vector<LabelValue> labels;
+};
+SetValues set_values(const JsonAt& at);
 // "D100-D199", "X0-X1F" or a single "D100"; or a list of them.
 std::vector<DeviceRange> ranges(const JsonAt& at);
 // "0401" or ["0401", "1401"].

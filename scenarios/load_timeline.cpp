@@ -43,7 +43,8 @@ Step step(const JsonAt& at, double previous_end) {
 
     if (kind == "set") {
         at.only_keys({"set", "at_ms", "after_ms"});
-        s.action = SetStep{config::parse_initial_values(at["set"])};
+        auto set = set_values(at["set"]);
+        s.action = SetStep{std::move(set.devices), std::move(set.labels)};
     } else if (kind == "increment") {
         at.only_keys({"increment", "by", "as", "at_ms", "after_ms"});
         IncrementStep i{device(at["increment"], at), 1};

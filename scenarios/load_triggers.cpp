@@ -26,7 +26,10 @@ DeviceCondition device_condition(const JsonAt& at, const JsonAt& owner) {
             if (used == text.size()) return {std::nullopt, v};
         } catch (const std::exception&) {
         }
-        at.fail("'" + text + "' is neither a device nor a number (" + error + ")", fix);
+        if (!may_be_label(text)) at.fail("'" + text + "' is neither a device nor a number (" + error + ")", fix);
+        // Neither: a label, resolved by bind_labels() (which names both possibilities if it is not one).
+        if (owner.has("as")) owner["as"].fail("\"as\" applies to devices; '" + text + "' is a label", "remove \"as\"");
+        return {DeviceRef{{}, ValueFormat::Int16, text}, 0};
     };
     DeviceCondition c;
     c.left = operand(tokens[0]);
@@ -64,12 +67,13 @@ Condition condition(const JsonAt& at, const JsonAt& owner) {
         at.only_keys({"rising", "falling"});
         if (at.has("rising") && at.has("falling")) at.fail("both \"rising\" and \"falling\"", "use two triggers");
         bool rising = at.has("rising");
-        auto bit = address(at[rising ? "rising" : "falling"]);
-        if (bit.spec->unit != devicemodel::Unit::Bit)
-            at[rising ? "rising" : "falling"].fail("not a bit device", "name a bit device such as M0, X1, Y10");
+        auto edge = at[rising ? "rising" : "falling"];
+        auto bit = device(edge, edge);   // a bit device, or a Bit label (bind_labels() checks its type)
+        if (bit.label.empty() && bit.address.spec->unit != devicemodel::Unit::Bit)
+            edge.fail("not a bit device", "name a bit device such as M0, X1, Y10, or a Bit label");
         DeviceCondition c;
         c.kind = rising ? DeviceCondition::Kind::Rising : DeviceCondition::Kind::Falling;
-        c.left = {DeviceRef{bit, ValueFormat::Int16}, 0};
+        c.left = {bit, 0};
         return c;
     }
     if (at.has("at_ms")) {
@@ -96,7 +100,8 @@ Action action(const JsonAt& at) {
     auto only = [&](std::initializer_list<std::string_view> keys) { at.only_keys(keys); };
     if (key == "set") {
         only({"set"});
-        return SetAction{config::parse_initial_values(at["set"])};
+        auto set = set_values(at["set"]);
+        return SetAction{std::move(set.devices), std::move(set.labels)};
     }
     if (key == "increment") {
         only({"increment", "by", "as"});

@@ -2,6 +2,7 @@
 // meaning of every key: docs/scenarios.md; machine-readable: schema.json.
 #include "scenarios/loader.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -43,9 +44,37 @@ ValueFormat value_format(const JsonAt& owner, const devicemodel::DeviceAddress& 
     as.fail("unknown value format '" + text + "'", "use \"int16\", \"int32\" or \"float\"");
 }
 
+bool may_be_label(std::string_view text) {
+    return !text.empty() && (std::isalpha(static_cast<unsigned char>(text[0])) || text[0] == '_');
+}
+
 DeviceRef device(const JsonAt& at, const JsonAt& owner) {
-    auto a = address(at);
-    return {a, value_format(owner, a)};
+    auto text = at.string();
+    std::string error;
+    if (auto a = devicemodel::parse_address(text, &error)) return {*a, value_format(owner, *a)};
+    if (!may_be_label(text)) at.fail(error, "write a device such as D100, M0, X1F, ZR1000, TN0, or a label name");
+    // Not a device: a label, checked against the CPU's labels by bind_labels().
+    if (owner.has("as")) owner["as"].fail("\"as\" applies to devices; '" + text + "' is a label, whose type gives the format",
+                                          "remove \"as\"");
+    return {{}, ValueFormat::Int16, text};
+}
+
+SetValues set_values(const JsonAt& at) {
+    at.expect_object();
+    SetValues set;
+    for (const auto& [key, value] : at.json().items()) {
+        if (devicemodel::parse_address(key)) {
+            set.devices.push_back(config::parse_initial_value(key, at[key]));
+            continue;
+        }
+        auto item = at[key];
+        if (!may_be_label(key)) config::parse_initial_value(key, item);   // fails with the device parser's message
+        if (!value.is_number() && !value.is_boolean())
+            item.fail("'" + key + "' is a label (no device is named so); a label takes one number",
+                      "write e.g. {\"" + key + "\": 50}, or name a device such as D100");
+        set.labels.push_back({{{}, ValueFormat::Int16, key}, value.is_boolean() ? double(value.get<bool>()) : value.get<double>()});
+    }
+    return set;
 }
 
 std::vector<DeviceRange> ranges(const JsonAt& at) {

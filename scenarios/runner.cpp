@@ -5,6 +5,7 @@
 #include "config/config.hpp"
 #include "protocol/error_response.hpp"
 #include "protocol/hex.hpp"
+#include "scenarios/bind_labels.hpp"
 #include "scenarios/check_devices.hpp"
 #include "scenarios/loader.hpp"
 #include "scenarios/device_values.hpp"
@@ -27,7 +28,8 @@ std::chrono::microseconds micros(double ms) { return std::chrono::microseconds(s
 ScenarioRunner::ScenarioRunner(std::vector<Scenario> scenarios, devicemodel::Cpu& cpu, EventSink log, Station* station)
     : scenarios_(std::move(scenarios)), cpu_(cpu), log_(std::move(log)), station_(station) {
     check_together(scenarios_);
-    for (const auto& s : scenarios_) {
+    for (auto& s : scenarios_) {
+        bind_labels(s, cpu_.labels());
         check_devices(s, cpu_.memory(), cpu_.profile().name);
         timelines_.push_back(std::make_unique<TimelineRunner>(s.timeline, s.seed));
         logic_.push_back(std::make_unique<LogicRunner>(s.logic));
@@ -176,7 +178,7 @@ void ScenarioRunner::run(const Trigger& trigger) {
     auto& runtime = cpu_.runtime();
     for (const auto& action : trigger.actions)
         std::visit(overloaded{
-                       [&](const SetAction& a) { apply_values(memory, a.values); },
+                       [&](const SetAction& a) { apply_values(memory, a.values, a.labels); },
                        [&](const IncrementAction& a) { write_number(memory, a.device, read_number(memory, a.device) + a.by); },
                        [&](const PulseAction& a) {
                            memory.set_bit(*a.device.spec, a.device.number, true);

@@ -14,6 +14,7 @@
 
 #include "config/config.hpp"
 #include "devicemodel/device_table.hpp"
+#include "devicemodel/labels.hpp"
 #include "devicemodel/operating_state.hpp"
 #include "protocol/end_code.hpp"
 #include "protocol/frame.hpp"
@@ -29,9 +30,20 @@ inline constexpr double kForever = std::numeric_limits<double>::infinity();
 // words. Bit devices always take 0/1.
 enum class ValueFormat : std::uint8_t { Int16, Int32, Float32 };
 
+// A device, or a global label standing in for one (docs/scenarios.md, "Labels").
+// The file names the label; bind_labels() resolves it against the CPU's label
+// table when the scenario starts, since the loader does not know the CPU.
 struct DeviceRef {
-    devicemodel::DeviceAddress address;
-    ValueFormat format = ValueFormat::Int16;
+    devicemodel::DeviceAddress address;           // spec null for a label
+    ValueFormat format = ValueFormat::Int16;      // a label's comes from its type
+    std::string label = {};                       // the name as written; empty for a device
+    std::optional<devicemodel::LabelRef> bound = {};   // set by bind_labels()
+};
+
+// "set": {"Tank1.Level": 50}: a number for a label (devices keep config's forms).
+struct LabelValue {
+    DeviceRef target;
+    double value = 0;
 };
 
 // Devices [first, last] of one storage area, e.g. "D100-D199" (inclusive).
@@ -52,7 +64,7 @@ struct InitialState {
 
 // ---- timeline -------------------------------------------------------------
 
-struct SetStep { std::vector<config::InitialValue> values; };
+struct SetStep { std::vector<config::InitialValue> values; std::vector<LabelValue> labels; };
 struct IncrementStep { DeviceRef device; double by = 1; };
 struct RampStep { DeviceRef device; double from = 0, to = 0; };
 struct SineStep { DeviceRef device; double center = 0, amplitude = 0, period_ms = 1000; };
@@ -152,7 +164,7 @@ struct TimeCondition { double at_ms = 0; };
 
 using Condition = std::variant<DeviceCondition, TrafficCondition, TimeCondition>;
 
-struct SetAction { std::vector<config::InitialValue> values; };
+struct SetAction { std::vector<config::InitialValue> values; std::vector<LabelValue> labels; };
 struct IncrementAction { DeviceRef device; double by = 1; };
 struct PulseAction { devicemodel::DeviceAddress device; double ms = 100; };
 struct SwitchAction { devicemodel::RunSwitch position = devicemodel::RunSwitch::Run; };

@@ -26,10 +26,12 @@ void copy_devices(devicemodel::DeviceMemory& memory, const CopyStep& c) {
 
 }  // namespace
 
-void apply_values(devicemodel::DeviceMemory& memory, const std::vector<config::InitialValue>& values) {
+void apply_values(devicemodel::DeviceMemory& memory, const std::vector<config::InitialValue>& values,
+                  const std::vector<LabelValue>& labels) {
     for (const auto& v : values)
         for (std::size_t i = 0; i < v.values.size(); ++i)
             memory.set_value(*v.address.spec, v.address.number + static_cast<std::uint32_t>(i), v.values[i]);
+    for (const auto& l : labels) write_number(memory, l.target, l.value);
 }
 
 TimelineRunner::TimelineRunner(const Timeline& timeline, std::uint64_t seed) : timeline_(timeline) {
@@ -83,7 +85,7 @@ void TimelineRunner::window(devicemodel::DeviceMemory& memory, std::int64_t pass
 
 void TimelineRunner::instant(devicemodel::DeviceMemory& memory, const Step& step, const EventSink& log) {
     std::visit(overloaded{
-                   [&](const SetStep& s) { apply_values(memory, s.values); },
+                   [&](const SetStep& s) { apply_values(memory, s.values, s.labels); },
                    [&](const IncrementStep& s) { write_number(memory, s.device, read_number(memory, s.device) + s.by); },
                    [&](const CopyStep& s) { copy_devices(memory, s); },
                    [](const auto&) {},

@@ -18,7 +18,8 @@
 namespace slmp::scenarios {
 
 // Writes values in the configuration's "devices" form (also used by "set" actions).
-void apply_values(devicemodel::DeviceMemory& memory, const std::vector<config::InitialValue>& values);
+void apply_values(devicemodel::DeviceMemory& memory, const std::vector<config::InitialValue>& values,
+                  const std::vector<LabelValue>& labels = {});
 
 class TimelineRunner {
 public:

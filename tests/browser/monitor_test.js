@@ -3,7 +3,8 @@
 // driven by playwright-core; no browser is downloaded) against the real
 // slmp-sim binary: load the page, add watches, see values written over SLMP
 // appear live, edit values in the page and read them back over SLMP; the
-// scenario loaded with --scenario and its fault show with their fire counts.
+// scenario loaded with --scenario and its fault show with their fire counts;
+// the labels panel shows the --labels tree and edits labels in place.
 //
 // Usage: node monitor_test.js [path/to/slmp-sim] [--screenshot FILE]
 //        (or SLMP_SIM_BINARY=...; CHROMIUM=... overrides /usr/bin/chromium)
@@ -55,12 +56,28 @@ const SCENARIO = {
   faults: [{ id: 'refuse-d200', do: 'end_code', end_code: 'C051', match: { command: '0401', devices: 'D200-D209' } }],
 };
 
+// Global labels for the labels panel: one on a device, a structure with a
+// nested array of structures and a timer, a 2-D array.
+const LABELS = {
+  structures: [
+    { name: 'Valve', members: [{ name: 'Open', type: 'Bit' }, { name: 'Pos', type: 'INT' }] },
+    { name: 'TankT', members: [{ name: 'Level', type: 'REAL' }, { name: 'V', type: 'Valve', dims: [2] }, { name: 'Delay', type: 'Timer' }] },
+  ],
+  labels: [
+    { name: 'LabelW', type: 'Word [Signed]', device: 'D9000' },
+    { name: 'Tank1', type: 'TankT' },
+    { name: 'Grid', type: 'Word [Signed](0..1,0..2)' },
+  ],
+};
+
 async function startSim(dir) {
   const readyFile = path.join(dir, 'ready.json');
   const scenarioFile = path.join(dir, 'scenario.json');
+  const labelsFile = path.join(dir, 'labels.json');
   fs.writeFileSync(scenarioFile, JSON.stringify(SCENARIO));
+  fs.writeFileSync(labelsFile, JSON.stringify(LABELS));
   const sim = childProcess.spawn(binary, ['--tcp-port', '0', '--udp-port', '0', '--http-port', '0', '--bind', '127.0.0.1',
-    '--ready-file', readyFile, '--log-level', 'warn', '--scenario', scenarioFile], { stdio: ['ignore', 'inherit', 'inherit'] });
+    '--ready-file', readyFile, '--log-level', 'warn', '--scenario', scenarioFile, '--labels', labelsFile], { stdio: ['ignore', 'inherit', 'inherit'] });
   const exited = new Promise((resolve) => sim.on('exit', (code, signal) => resolve({ code, signal })));
   const deadline = Date.now() + WAIT_MS;
   while (Date.now() < deadline) {
@@ -260,6 +277,37 @@ async function main() {
     await check('a fault turned off in the page no longer fires', async () => {
       await page.click('#faults tr[data-id="refuse-d200"] input[type="checkbox"]');
       await eventually(() => slmp.readWords('D', 200, 1).catch((e) => e.message), [0], 'D200 over SLMP');
+    });
+
+    const labelText = (element) => page.evaluate((e) => {
+      const cell = document.querySelector(`#labels span.value[data-element="${e}"]`);
+      return cell ? cell.textContent : null;
+    }, element);
+
+    await check('the labels panel shows the tree: structure members, nested elements, timer members', async () => {
+      await page.waitForSelector('#labels-section:not([hidden])');
+      for (const row of ['LabelW', 'Tank1', 'Tank1.Level', 'Tank1.V[1].Pos', 'Tank1.Delay.N', 'Grid'])
+        await page.waitForSelector(`#labels tr[data-label="${row}"]`);
+      await page.waitForSelector('#labels span.value[data-element="Grid[1,2]"]');
+    });
+
+    await check('a label written over SLMP (its device D9000) appears in the panel', async () => {
+      await slmp.writeWords('D', 9000, [777]);
+      await page.waitForFunction(() => document.querySelector('#labels span.value[data-element="LabelW"]').textContent === '777');
+    });
+
+    await check('a label element edited in the panel is read back through the HTTP API', async () => {
+      await page.click('#labels span.value[data-element="Grid[1,2]"]');
+      await page.fill('#labels span.value[data-element="Grid[1,2]"] input', '-12');
+      await page.press('#labels span.value[data-element="Grid[1,2]"] input', 'Enter');
+      await eventually(async () => (await (await fetch(`${url}api/labels/Grid%5B1%2C2%5D`)).json()).values, [-12], 'Grid[1,2] over HTTP');
+      await eventually(() => labelText('Grid[1,2]'), '-12', 'Grid[1,2] in the panel');
+    });
+
+    await check('a bit label member toggles when clicked', async () => {
+      await eventually(() => labelText('Tank1.V[0].Open'), '0', 'Tank1.V[0].Open before');
+      await page.click('#labels span.value[data-element="Tank1.V[0].Open"]');
+      await eventually(async () => (await (await fetch(`${url}api/labels/Tank1.V%5B0%5D.Open`)).json()).values, [1], 'Tank1.V[0].Open over HTTP');
     });
 
     await check('the page raised no script errors', async () => {

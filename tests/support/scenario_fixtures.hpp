@@ -37,8 +37,10 @@ inline void set(devicemodel::Cpu& cpu, const std::string& address, std::uint32_t
 // A CPU, a runner over it and the events it logged. The CPU's own scan runs
 // before the runner's, as in the server's scan loop.
 struct ScenarioRig {
-    explicit ScenarioRig(const std::string& json, const std::string& profile = "R08CPU")
+    // `config_json`: a configuration whose "labels" (and "structures") the CPU declares first.
+    explicit ScenarioRig(const std::string& json, const std::string& profile = "R08CPU", const std::string& config_json = "")
         : cpu(config::load_profile(profile).cpu) {
+        if (!config_json.empty()) config::declare_labels(cpu, config::parse_server_config(config_json, "config.json").labels);
         std::vector<scenarios::Scenario> list;
         list.push_back(scenario(json));
         runner = std::make_unique<scenarios::ScenarioRunner>(
