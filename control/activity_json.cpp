@@ -52,6 +52,7 @@ json request_json(const station::RequestRecord& record) {
              {"bytes_in", record.frame.size()},
              {"bytes_out", outcome.response.size()},
              {"note", outcome.note}};
+    if (!outcome.named.empty()) out["named"] = outcome.named;   // label names (the devices column of a label request)
     if (auto devices = decoded ? request_devices(record.request) : std::nullopt) {
         out["device"] = devices->device;
         out["points"] = devices->points;

@@ -39,6 +39,7 @@ struct CommandContext {
     FieldReader& in;               // the request data after the subcommand (rows without a decoder)
     FieldWriter& out;
     bool restarted = false;        // Remote RESET succeeded: no response, every connection closes
+    std::string named = {};        // what the request names besides devices ("LabelW, DDD[0]"): Outcome::named
 };
 
 // What a decoder gets: the request data after the subcommand, the row, and

@@ -77,6 +77,7 @@ struct Outcome {
     std::size_t consumed = 0;
     std::vector<std::uint8_t> response;
     std::string note;              // why a request was rejected or ignored; empty on success
+    std::string named;             // what the request named besides devices (label names), for the call monitor and recordings
     std::uint16_t command = 0;
     std::uint16_t subcommand = 0;
     EndCode end_code = EndCode::Ok;

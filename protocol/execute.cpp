@@ -161,7 +161,9 @@ Outcome Engine::execute(const Request& request, Session& session) {
         auto field = code == request.operands.error ? request.operands.error_field : in.error_field();
         auto why = std::string(spec->name);
         if (!field.empty()) why += ": bad or missing field '" + std::string(field) + "'";
-        return reply.error(code, why);
+        auto outcome = reply.error(code, why);
+        outcome.named = std::move(ctx.named);   // a refused label request still shows the names it sent
+        return outcome;
     }
     if (ctx.restarted) return reply.drop(Outcome::Action::Restart, "");   // §5.6: no response on success
     // 1E bit data come in whole bytes: an odd count gets a dummy 0 point
@@ -169,7 +171,9 @@ Outcome Engine::execute(const Request& request, Session& session) {
     if (row_1e && row_1e->bit_data && request.header.codec == Codec::Ascii && !request.operands.devices.empty() &&
         request.operands.devices.front().points % 2 != 0)
         out.bytes().push_back('0');
-    return reply.ok(out.bytes());
+    auto outcome = reply.ok(out.bytes());
+    outcome.named = std::move(ctx.named);
+    return outcome;
 }
 
 }  // namespace slmp::protocol

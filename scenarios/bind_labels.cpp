@@ -73,6 +73,27 @@ struct Binder {
     void bind(std::vector<LabelValue>& values, const std::string& where) const {
         for (auto& v : values) bind(v.target, where + "/" + v.target.label);
     }
+
+    // The rung language is bits and 16-bit words: a contact or coil takes a Bit
+    // label, a word operand a Word label; RST takes either (as RST D0 / RST M0).
+    void bind(const Instruction& ins, LogicOperand& o, const std::string& where) const {
+        if (o.label.empty()) return;
+        DeviceRef ref{{}, ValueFormat::Int16, o.label};
+        bind(ref, where);
+        const auto basic = ref.bound->basic;
+        const bool word = basic == BasicType::Word || basic == BasicType::UWord;
+        if (ins.op == LogicOp::Reset && word) o.kind = LogicOperand::Kind::Word;
+        const bool fits = o.kind == LogicOperand::Kind::Bit ? basic == BasicType::Bit : word;
+        if (!fits) {
+            devicemodel::LabelType type{};
+            type.basic = basic;
+            fail(where, "label '" + o.label + "' is of type " + devicemodel::format_label_type(type) + ", where the rung needs " +
+                            (o.kind == LogicOperand::Kind::Bit ? "a bit" : "a 16-bit word"),
+                 o.kind == LogicOperand::Kind::Bit ? "name a Bit label or a bit device here"
+                                                   : "name a Word [Signed] or Word [Unsigned] label, or a word device");
+        }
+        o.bound = ref.bound;
+    }
 };
 
 template <class... Ts>
@@ -113,6 +134,9 @@ void bind_labels(Scenario& s, const devicemodel::LabelTable& labels) {
                        t.actions[i]);
         }
     }
+    for (auto& rung : s.logic.rungs)
+        for (auto& ins : rung.code)
+            for (auto& o : ins.operands) b.bind(ins, o, rung.pointer);
 }
 
 }  // namespace slmp::scenarios

@@ -14,17 +14,20 @@
 // contact), MOV, ADD, SUB (S1 S2 D), INC, DEC, each with a P form (MOVP …)
 // that runs on the rung's rising edge only. Operands: bit and word devices
 // (D100, M0, X1F, W1A), T/ST/C numbers (contact in a contact, current value in
-// a word operand, coil in OUT), constants K123 / H7F. Reference and the exact
+// a word operand, coil in OUT), constants K123 / H7F, and Bit or Word global
+// labels (case as declared: "LD StartButton OUT Motor"). Reference and the exact
 // evaluation rules: docs/scenarios.md "Logic".
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "devicemodel/device_table.hpp"
 #include "devicemodel/device_memory.hpp"
+#include "devicemodel/labels.hpp"
 #include "devicemodel/runtime_config.hpp"
 #include "devicemodel/timers.hpp"
 #include "scenarios/compare.hpp"
@@ -36,6 +39,10 @@ struct LogicOperand {
     Kind kind = Kind::Constant;
     devicemodel::DeviceAddress device;   // Bit/Word; Timer: area T/ST/C and number
     std::int32_t constant = 0;
+    // A Bit or Word global label instead of a device (spec null): the name as
+    // written, resolved by bind_labels() when the scenario starts.
+    std::string label = {};
+    std::optional<devicemodel::LabelRef> bound = {};
 };
 
 enum class LogicOp : std::uint8_t {

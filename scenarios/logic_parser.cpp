@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "config/config.hpp"
+#include "scenarios/load_parts.hpp"
 #include "scenarios/logic.hpp"
 
 namespace slmp::scenarios {
@@ -25,6 +26,7 @@ struct Parser {
     const std::string& source;
     const std::string& pointer;
     std::string token;   // the instruction being parsed, for messages
+    std::string raw;     // the operand being parsed as written (labels keep their case)
 
     [[noreturn]] void fail(const std::string& problem, const std::string& fix) const {
         throw config::ConfigError(source + ": " + pointer + ": " + (token.empty() ? "" : "'" + token + "': ") + problem +
@@ -75,9 +77,16 @@ struct Parser {
         return *address;
     }
 
+    // Not a device but a possible label name: bind_labels() checks it against the CPU.
+    std::optional<LogicOperand> label(const std::string& text, Kind kind) const {
+        if (devicemodel::parse_address(text) || !load::may_be_label(raw)) return std::nullopt;
+        return LogicOperand{kind, {}, 0, raw};
+    }
+
     LogicOperand bit(const std::string& text) const {
         if (auto t = timer(text)) return {Kind::Bit, *t, 0};   // T0 as a contact: TS0
         if (constant(text)) fail("a constant cannot be a contact", "name a bit device such as X0, M0, T0");
+        if (auto l = label(text, Kind::Bit)) return *l;
         auto d = device(text);
         if (d.spec->unit != devicemodel::Unit::Bit)
             fail(text + " is a word device", "name a bit device here, or use a compare contact such as LD<> " + text + " K0");
@@ -93,6 +102,7 @@ struct Parser {
             t->spec = part(t->spec, devicemodel::Part::Value);
             return {Kind::Word, *t, 0};
         }
+        if (auto l = label(text, Kind::Word)) return *l;
         auto d = device(text);
         if (d.spec->unit != devicemodel::Unit::Word)
             fail(text + " is a bit device", "name a word device (D, W, R, ZR, SD, TN, CN …); digit designation such as K4M0 is not supported");
@@ -138,9 +148,9 @@ std::optional<Mnemonic> contact_mnemonic(const std::string& m) {
 
 void parse_rung(LogicProgram& program, const std::string& text, const std::string& source, const std::string& pointer) {
     Parser p{program, source, pointer, {}};
-    std::vector<std::string> tokens;
+    std::vector<std::string> tokens, raw;
     std::istringstream in(text);
-    for (std::string t; in >> t;) tokens.push_back(upper(t));
+    for (std::string t; in >> t;) raw.push_back(t), tokens.push_back(upper(t));
     if (tokens.empty()) p.fail("an empty rung", "write instructions such as \"LD X0 OUT Y0\"");
 
     Rung rung{{}, text, pointer};
@@ -149,6 +159,7 @@ void parse_rung(LogicProgram& program, const std::string& text, const std::strin
     bool last_was_output = false;
     auto operand = [&](const char* what) -> std::string {
         if (i >= tokens.size()) p.fail("missing " + std::string(what), "complete the instruction");
+        p.raw = raw[i];
         return tokens[i++];
     };
     auto need_one_block = [&] {

@@ -17,13 +17,28 @@ const DeviceSpec* part_of(devicemodel::Area area, Part part) {
     return nullptr;
 }
 
+// Operands are devices or bound labels (one word or one bit, devicemodel's
+// element access wherever the label lives).
 std::int16_t read_word(const DeviceMemory& memory, const LogicOperand& o) {
     if (o.kind == LogicOperand::Kind::Constant) return static_cast<std::int16_t>(o.constant);
+    if (o.bound) return static_cast<std::int16_t>(devicemodel::read_element(memory, *o.bound, 0)[0]);
     return static_cast<std::int16_t>(memory.value(*o.device.spec, o.device.number) & 0xFFFF);
 }
 
 void write_word(DeviceMemory& memory, const LogicOperand& o, std::int32_t value) {
-    memory.set_value(*o.device.spec, o.device.number, static_cast<std::uint16_t>(value));
+    const std::uint16_t word = static_cast<std::uint16_t>(value);
+    if (o.bound) return devicemodel::write_element(memory, *o.bound, 0, std::span(&word, 1));
+    memory.set_value(*o.device.spec, o.device.number, word);
+}
+
+bool read_bit(const DeviceMemory& memory, const LogicOperand& o) {
+    if (o.bound) return devicemodel::read_element(memory, *o.bound, 0)[0] & 1;
+    return memory.bit(*o.device.spec, o.device.number);
+}
+
+void write_bit(DeviceMemory& memory, const LogicOperand& o, bool on) {
+    if (o.bound) return write_word(memory, o, on ? 1 : 0);
+    memory.set_bit(*o.device.spec, o.device.number, on);
 }
 
 }  // namespace
@@ -40,8 +55,7 @@ void LogicRunner::stopped() {
 bool LogicRunner::contact(const DeviceMemory& memory, const Instruction& ins) {
     if (ins.contact == Contact::Compare)
         return compare(read_word(memory, ins.operands[0]), ins.compare, read_word(memory, ins.operands[1]));
-    const auto& d = ins.operands[0].device;
-    bool on = memory.bit(*d.spec, d.number);
+    bool on = read_bit(memory, ins.operands[0]);
     switch (ins.contact) {
         case Contact::Normal: return on;
         case Contact::Inverted: return !on;
@@ -65,10 +79,10 @@ void LogicRunner::output(DeviceMemory& memory, const Instruction& ins, bool powe
     const auto& o = ins.operands.empty() ? LogicOperand{} : ins.operands.back();
     switch (ins.op) {
         case LogicOp::Out:
-            memory.set_bit(*o.device.spec, o.device.number, power);   // a bit, or a T/ST/C coil
+            write_bit(memory, o, power);   // a bit, or a T/ST/C coil
             return;
         case LogicOp::Set:
-            if (power) memory.set_bit(*o.device.spec, o.device.number, true);
+            if (power) write_bit(memory, o, true);
             return;
         case LogicOp::Reset:
             if (!power) return;
@@ -79,7 +93,7 @@ void LogicRunner::output(DeviceMemory& memory, const Instruction& ins, bool powe
             } else if (o.kind == LogicOperand::Kind::Word) {
                 write_word(memory, o, 0);
             } else {
-                memory.set_bit(*o.device.spec, o.device.number, false);
+                write_bit(memory, o, false);
             }
             return;
         case LogicOp::Move:

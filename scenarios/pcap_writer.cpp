@@ -141,7 +141,8 @@ PcapWriter::Flow& PcapWriter::flow(TimePoint at, const RecordedLink& link, const
 }
 
 void PcapWriter::exchange(TimePoint at, const RecordedLink& link, std::span<const std::uint8_t> request,
-                          const std::vector<std::uint8_t>* response, const std::vector<std::string>&) {
+                          const std::vector<std::uint8_t>* response, const std::vector<std::string>&,
+                          const std::string&) {
     auto ends = endpoints(link);
     if (link.transport == Transport::Udp) {
         udp(at, ends, true, request);

@@ -38,7 +38,8 @@ public:
 
     void opened(TimePoint at, const RecordedLink& link) override;
     void exchange(TimePoint at, const RecordedLink& link, std::span<const std::uint8_t> request,
-                  const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults) override;
+                  const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults,
+                  const std::string& named) override;
     void closed(TimePoint at, const RecordedLink& link, const std::string& why) override;
 
     // An IP address and port as the packets carry them (v4 in the first 4 bytes).

@@ -28,9 +28,11 @@ public:
     virtual ~Recorder() = default;
 
     virtual void opened(TimePoint at, const RecordedLink& link) = 0;
-    // `response` is null when nothing was sent; `faults` names the faults that fired.
+    // `response` is null when nothing was sent; `faults` names the faults that
+    // fired; `named` what the request named besides devices (label names).
     virtual void exchange(TimePoint at, const RecordedLink& link, std::span<const std::uint8_t> request,
-                          const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults) = 0;
+                          const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults,
+                          const std::string& named) = 0;
     virtual void closed(TimePoint at, const RecordedLink& link, const std::string& why) = 0;
 };
 

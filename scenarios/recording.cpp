@@ -82,11 +82,13 @@ void RecordingWriter::opened(TimePoint at, const RecordedLink& link) {
 }
 
 void RecordingWriter::exchange(TimePoint at, const RecordedLink& link, std::span<const std::uint8_t> request,
-                               const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults) {
+                               const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults,
+                               const std::string& named) {
     auto e = event(ms(at), link, "exchange");
     e["request"] = to_hex(request);
     e["response"] = response ? json(to_hex(*response)) : json(nullptr);
     if (!faults.empty()) e["faults"] = faults;
+    if (!named.empty()) e["named"] = named;
     line(e.dump());
 }
 

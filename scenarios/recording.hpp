@@ -51,7 +51,8 @@ public:
 
     void opened(TimePoint at, const RecordedLink& link) override;
     void exchange(TimePoint at, const RecordedLink& link, std::span<const std::uint8_t> request,
-                  const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults) override;
+                  const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults,
+                  const std::string& named) override;
     void closed(TimePoint at, const RecordedLink& link, const std::string& why) override;
 
 private:

@@ -139,7 +139,8 @@ void ScenarioHook::after(scenarios::Plan& plan, Handled& handled, std::span<cons
     const scenarios::RecordedLink at{session.id, peer.transport, peer.endpoint(), peer.local_port};
     for (auto& r : recorders_)
         r->exchange(std::chrono::steady_clock::now(), at, input.first(outcome.consumed),
-                    outcome.action == Outcome::Action::Respond ? &outcome.response : nullptr, plan.decision.fired);
+                    outcome.action == Outcome::Action::Respond ? &outcome.response : nullptr, plan.decision.fired,
+                    outcome.named);
 }
 
 void ScenarioHook::scanned(std::chrono::steady_clock::time_point now) {

@@ -337,7 +337,7 @@ function addCall(call) {
   const ok = call.end_code === '0000';
   row.className = ok ? '' : 'error';
   const command = call.command ? `${call.command}/${call.subcommand}${call.name ? ' ' + call.name : ''}` : '—';
-  const devices = call.device ? `${call.device} ×${call.points} ${call.unit}` : '';
+  const devices = call.device ? `${call.device} ×${call.points} ${call.unit}` : (call.named || '');
   const endCode = call.end_code ?? (call.reaction === 'closed' ? 'closed' : 'no answer');
   const cells = [call.time.slice(11, 23), call.peer, command, devices, endCode, `${call.latency_us.toFixed(1)} µs`, call.note];
   for (const text of cells) row.insertCell().textContent = text;

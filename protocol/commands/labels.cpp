@@ -43,6 +43,20 @@ std::string read_name(FieldReader& in) {
     return devicemodel::utf16_to_utf8(units);
 }
 
+// The names a request carries, as the call monitor and recordings show them
+// (CommandContext::named): the first eight, then how many more.
+void note_name(CommandContext& ctx, const std::string& name, std::uint16_t index, std::uint16_t points) {
+    constexpr std::uint16_t kShown = 8;
+    if (index < kShown) ctx.named += (index ? ", " : "") + name;
+    if (index == kShown) ctx.named += " +" + std::to_string(points - kShown) + " more";
+}
+
+std::string read_entry_name(CommandContext& ctx, std::uint16_t index, std::uint16_t points) {
+    auto name = read_name(ctx.in);
+    if (ctx.in.ok()) note_name(ctx, name, index, points);
+    return name;
+}
+
 // Abbreviation points and the registered prefixes (%1 ... %n).
 std::vector<std::string> read_abbreviations(FieldReader& in) {
     auto count = in.u16("abbreviation points");
@@ -125,7 +139,7 @@ EndCode array_label_read(CommandContext& ctx) {
     };
     std::vector<Entry> entries;
     for (std::uint16_t p = 0; p < points; ++p) {
-        auto name = read_name(ctx.in);
+        auto name = read_entry_name(ctx, p, points);
         Entry e{};
         e.unit = ctx.in.u8("read unit specification");
         auto fixed = ctx.in.u8("fixed value");
@@ -165,7 +179,7 @@ EndCode array_label_write(CommandContext& ctx) {
     const auto& abbreviations = preamble.abbreviations;
     std::vector<Write> writes;
     for (std::uint16_t p = 0; p < points; ++p) {
-        auto name = read_name(ctx.in);
+        auto name = read_entry_name(ctx, p, points);
         auto unit = ctx.in.u8("write unit specification");
         auto fixed = ctx.in.u8("fixed value");
         auto length = ctx.in.u16("write array data length");
@@ -198,10 +212,10 @@ EndCode label_read_random(CommandContext& ctx) {
     const auto points = preamble.points;
     const auto& abbreviations = preamble.abbreviations;
     std::vector<LabelRef> refs(points);
-    for (auto& ref : refs) {
-        auto name = read_name(ctx.in);
+    for (std::uint16_t p = 0; p < points; ++p) {
+        auto name = read_entry_name(ctx, p, points);
         if (!ctx.in.ok()) return ctx.in.error();
-        if (auto code = resolve(ctx, name, abbreviations, ref); code != EndCode::Ok) return code;
+        if (auto code = resolve(ctx, name, abbreviations, refs[p]); code != EndCode::Ok) return code;
     }
     if (!ctx.in.finish()) return ctx.in.error();
 
@@ -222,7 +236,7 @@ EndCode label_write_random(CommandContext& ctx) {
     const auto& abbreviations = preamble.abbreviations;
     std::vector<Write> writes;
     for (std::uint16_t p = 0; p < points; ++p) {
-        auto name = read_name(ctx.in);
+        auto name = read_entry_name(ctx, p, points);
         auto length = ctx.in.u16("write data length");
         if (!ctx.in.ok()) return ctx.in.error();
         Write w;

@@ -413,3 +413,17 @@ TEST_CASE("labels survive a snapshot: the label area is saved and restored", "[l
     CHECK(again.ok);
     CHECK(fresh.memory().label_word(0) == 0xF00D);
 }
+
+TEST_CASE("the outcome names the labels a request carried, for the call monitor and recordings", "[labels]") {
+    auto wire = GENERATE(values<Wire>(kAll));
+    auto cpu = cpu_with_labels(kRandom);
+    CHECK(run(cpu, wire.request(random_label_read_req({"LabelB", "LabelW", "Sw.led"}))).named == "LabelB, LabelW, Sw.led");
+    // Refused at the second name (40C0): the names up to the one that failed.
+    auto refused = run(cpu, wire.request(random_label_read_req({"LabelB", "Nope", "LabelW"})));
+    CHECK(refused.end_code == protocol::EndCode::LabelNotFound);
+    CHECK(refused.named == "LabelB, Nope");
+    std::vector<std::string> many(10, "LabelW");
+    CHECK(run(cpu, wire.request(random_label_read_req(many))).named ==
+          "LabelW, LabelW, LabelW, LabelW, LabelW, LabelW, LabelW, LabelW +2 more");
+    CHECK(run(cpu, wire.request(word(0x0401) + word(0) + device(Form::Q, "D0") + word(1))).named.empty());
+}

@@ -47,7 +47,7 @@ TEST_CASE("pcap: a TCP session as SYN, data with advancing sequence numbers, FIN
         scenarios::PcapWriter w(file, "0.0.0.0", at(0), kWall);
         const scenarios::RecordedLink link{7, scenarios::Transport::Tcp, "127.0.0.1:50312", 5000};
         w.opened(at(1.5), link);
-        w.exchange(at(2), link, kRequest, &kResponse, {});
+        w.exchange(at(2), link, kRequest, &kResponse, {}, "");
         w.closed(at(3), link, "closed by the client");
     }
     auto pcap = slurp(file);
@@ -81,7 +81,7 @@ TEST_CASE("pcap: a UDP exchange between the client's address and the bound addre
     auto file = temp_file("udp.pcap");
     {
         scenarios::PcapWriter w(file, "192.168.3.10", at(0), kWall);
-        w.exchange(at(1), {3, scenarios::Transport::Udp, "10.0.0.5:40000", 5001}, kRequest, nullptr, {});
+        w.exchange(at(1), {3, scenarios::Transport::Udp, "10.0.0.5:40000", 5001}, kRequest, nullptr, {}, "");
     }
     auto pcap = slurp(file);
     REQUIRE(pcap.size() == 24 + 16 + 28 + kRequest.size());   // no answer: one datagram

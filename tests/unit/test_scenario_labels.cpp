@@ -144,3 +144,37 @@ TEST_CASE("scenario labels: load errors for labels are found before the CPU is k
     CHECK_THAT(load_error(R"({"timeline": {"steps": [{"increment": "9D"}]}})"),
                Catch::StartsWith("test.json: /timeline/steps/0/increment: "));
 }
+
+TEST_CASE("scenario labels: the rung logic reads and writes Bit and Word labels", "[scenario][labels][logic]") {
+    ScenarioRig rig(R"({"logic": ["LD Start OR Alarm OUT Alarm",
+                                  "LD>= LabelW K5 MOV K7 Speeds[1]",
+                                  "LDP Alarm INC LabelW",
+                                  "LD M0 RST LabelW RST Alarm"]})",
+                    "R08CPU", kLabels);
+    rig.scan(0);
+    CHECK(words(rig.cpu, "Alarm") == std::vector<std::uint16_t>{0});
+    set(rig.cpu, "M100", 1);   // Start is M100
+    rig.scan(10);
+    CHECK(words(rig.cpu, "Alarm") == std::vector<std::uint16_t>{1});   // label-area bit, latched through OR Alarm
+    CHECK(rig["D9000"] == 1);                                           // INC LabelW on the rising edge of Alarm
+    set(rig.cpu, "M100", 0);
+    set(rig.cpu, "D9000", 5);
+    rig.scan(20);
+    CHECK(words(rig.cpu, "Alarm") == std::vector<std::uint16_t>{1});
+    CHECK(words(rig.cpu, "Speeds[1]") == std::vector<std::uint16_t>{7});
+    set(rig.cpu, "M0", 1);
+    rig.scan(30);
+    CHECK(rig["D9000"] == 0);   // RST of a Word label clears it
+    CHECK(words(rig.cpu, "Alarm") == std::vector<std::uint16_t>{0});
+}
+
+TEST_CASE("scenario labels: rung operands of the wrong type or unknown stop the start", "[scenario][labels][logic]") {
+    CHECK(start_error(R"({"logic": ["LD LabelW OUT Y0"]})") ==
+          "test.json: /logic/0: label 'LabelW' is of type Word [Signed], where the rung needs a bit; name a Bit label "
+          "or a bit device here");
+    CHECK(start_error(R"({"logic": ["LD X0 MOV Count D0"]})") ==
+          "test.json: /logic/0: label 'Count' is of type Double Word [Signed], where the rung needs a 16-bit word; "
+          "name a Word [Signed] or Word [Unsigned] label, or a word device");
+    CHECK_THAT(start_error(R"({"logic": ["LD X0 OUT Motor"]})"),
+               Catch::StartsWith("test.json: /logic/0: 'Motor' is neither a device nor a global label"));
+}

@@ -148,8 +148,19 @@ TEST_CASE("logic: rung mistakes are refused with the rung's pointer and the fix"
     fails_with({"LD X0 MOV K99999 D0"}, "K99999 does not fit 16 bits");
     fails_with({"LD X0 JMP P0"}, "/logic/0: 'JMP': unknown instruction");
     fails_with({"LD X0 ORB OUT Y0"}, "'ORB': needs two blocks");
-    fails_with({"LD Q0 OUT Y0"}, "/logic/0: 'LD': unknown device in address 'Q0'");
     fails_with({"LD X0 MOV K4M0 D0"}, "not a constant");
+}
+
+TEST_CASE("logic: an operand that is neither a device nor a label is refused when the scenario starts",
+          "[scenario][logic][loader]") {
+    // Not a device, so possibly a label: only the CPU's label table can tell (bind_labels).
+    CHECK_THROWS_WITH(ScenarioRig(program({"LD Q0 OUT Y0"})),
+                      "test.json: /logic/0: 'Q0' is neither a device nor a global label (no global label or member of "
+                      "that name); name a device such as D100, or declare the label in \"labels\" / --labels "
+                      "(docs/labels.md)");
+    CHECK_THROWS_WITH(ScenarioRig(program({"LD X0 OUT M1G"})), Catch::EndsWith(
+                      "as a device: bad device number '1G' in address 'M1G' (M is numbered in decimal); name a device "
+                      "such as D100, or declare the label in \"labels\" / --labels (docs/labels.md)"));
 }
 
 TEST_CASE("logic: devices past the CPU's sizes are refused when the scenario starts", "[scenario][logic][loader]") {

@@ -33,15 +33,20 @@ TEST_CASE("recording: written as JSON lines and read back", "[scenario][replay]"
         const scenarios::RecordedLink link{2, scenarios::Transport::Tcp, "127.0.0.1:5555", 5000};
         w.opened(at(1), link);
         Bytes response = bytes("D0 00 00 FF FF 03 00 04 00 00 00 2A 00");
-        w.exchange(at(2.5), link, kRead3E, &response, {"slow"});
-        w.exchange(at(3), link, kRead3E, nullptr, {});
+        w.exchange(at(2.5), link, kRead3E, &response, {"slow"}, "");
+        w.exchange(at(3), link, kRead3E, nullptr, {}, "");
+        w.exchange(at(3.5), link, kRead3E, nullptr, {}, "LabelW, DDD[0]");
         w.closed(at(4), link, "closed by the client");
     }
     std::ifstream in(file);
-    std::string header, open, exchange;
+    std::string header, open, exchange, unanswered, labelled;
     std::getline(in, header);
     std::getline(in, open);
     std::getline(in, exchange);
+    std::getline(in, unanswered);
+    std::getline(in, labelled);
+    CHECK(unanswered.find("named") == std::string::npos);   // only when the request named something
+    CHECK(labelled.find(R"("named":"LabelW, DDD[0]")") != std::string::npos);
     CHECK(header.find(R"("slmp_recording":1)") != std::string::npos);
     CHECK(header.find(R"("profile":"R08CPU")") != std::string::npos);
     CHECK(open == R"({"conn":2,"event":"open","peer":"127.0.0.1:5555","t_ms":1.0,"transport":"tcp"})");
@@ -50,7 +55,7 @@ TEST_CASE("recording: written as JSON lines and read back", "[scenario][replay]"
 
     auto r = scenarios::read_recording(file);
     CHECK(r.profile == "R08CPU");
-    REQUIRE(r.exchanges.size() == 2);
+    REQUIRE(r.exchanges.size() == 3);
     CHECK(r.exchanges[0].request == kRead3E);
     CHECK(r.exchanges[0].response == bytes("D0 00 00 FF FF 03 00 04 00 00 00 2A 00"));
     CHECK_FALSE(r.exchanges[1].response);
@@ -104,7 +109,7 @@ TEST_CASE("replay: a scenario answers from its recording, misses go by on_miss",
     {
         scenarios::RecordingWriter w(dir / "session.jsonl", "R08CPU", at(0));
         Bytes response = bytes("D0 00 00 FF FF 03 00 04 00 00 00 2A 00");
-        w.exchange(at(1), {1, scenarios::Transport::Tcp, "127.0.0.1:1", 5000}, kRead3E, &response, {});
+        w.exchange(at(1), {1, scenarios::Transport::Tcp, "127.0.0.1:1", 5000}, kRead3E, &response, {}, "");
     }
     auto run_with = [&](const std::string& replay, const Bytes& frame) {
         std::ofstream(dir / "replay.json") << R"({"replay": )" << replay << "}";
