@@ -39,9 +39,11 @@ std::string HostLink::answer(std::string_view record, LinkState& link, std::stri
     auto code = record.substr(3, 2);
     if (command) *command = std::string(code);
     auto body = record.substr(0, record.size() - 4);
+    // QQ answers under its subcommand too: "QQMR" + code, "QQIR" + code + data (§6.9, §6.10).
+    auto answered_as = code == "QQ" && body.size() >= 7 ? body.substr(3, 4) : code;
     auto with_code = [&](std::string_view response_code, std::string_view data = {}) {
         std::string reply = "@00";
-        reply += code;
+        reply += answered_as;
         reply += response_code;
         reply += data;
         return close_record(reply);

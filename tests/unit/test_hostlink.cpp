@@ -63,7 +63,9 @@ TEST_CASE("host link consolidated vectors 4-22 (§9)", "[hostlink]") {
     f.set("D", 1, 0xABCD);
     CHECK(f.ask("@00RD0000000254*\r") == "@00RD001234ABCD56*\r");   // 5
 
-    CHECK(f.ask("@00WD0100ABCD123452*\r") == "@00WD0052*\r");   // 6
+    // 6: the spec prints the answer "@00WD0052*\r", but XOR("@00WD00") is 0x53
+    // (its WE answer, vector 21, is the one with FCS 52): the spec's slip.
+    CHECK(f.ask("@00WD0100ABCD123452*\r") == "@00WD0053*\r");
     CHECK(f.value("D", 100) == 0xABCD);
     CHECK(f.value("D", 101) == 0x1234);
 
@@ -177,8 +179,8 @@ TEST_CASE("host link errors: bad input gets 01 and changes nothing", "[hostlink]
     CHECK(f.ask(hostlink::close_record("@00WG05111")) != err("WG"));
     CHECK(f.ask(hostlink::close_record("@00WG051111")) == err("WG"));   // past T/C 511
     CHECK(f.ask(hostlink::close_record("@00MMX")) == err("MM"));
-    CHECK(f.ask(hostlink::close_record("@00QQIR")) == err("QQ"));       // no list registered
-    CHECK(f.ask(hostlink::close_record("@00QQMRDM  9999CH")) == err("QQ"));
+    CHECK(f.ask(hostlink::close_record("@00QQIR")) == err("QQIR"));     // no list registered
+    CHECK(f.ask(hostlink::close_record("@00QQMRDM  9999CH")) == err("QQMR"));
     CHECK(f.ask(hostlink::close_record("@00QQXX")) == "@00IC4A*\r");
     // Every refused OMRON command: 01, no data.
     for (const auto& row : hostlink::command_table())
