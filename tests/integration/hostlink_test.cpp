@@ -134,7 +134,7 @@ TEST_CASE("host link: QQMR/QQIR lists belong to their connection", "[hostlink]")
     auto first = TcpClient::open(hostlink_port(sim));
     auto second = TcpClient::open(hostlink_port(sim));
     CHECK(ask(first, record("@00WD01001234")) == record("@00WD00"));
-    CHECK(ask(first, record("@00Wr000151")) == record("@00Wr00"));
+    CHECK(ask(first, record("@00Wr001051")) == record("@00Wr00"));
     CHECK(ask(first, "@00QQMRDM  0100CH,CIO 00010511*\r") == "@00QQMR005F*\r");
     CHECK(ask(first, "@00QQIR5B*\r") == "@00QQIR001234,142*\r");
     CHECK(ask(second, "@00QQIR5B*\r") == record("@00QQIR01"));
@@ -148,13 +148,13 @@ TEST_CASE("host link and SLMP on one MELSEC station: a write through one is read
     auto slmp = TcpClient::open(sim.tcp_port());
     auto link = TcpClient::open(hostlink_port(sim));
     // SLMP 1401 (3E binary): D100 = 0x1234.
-    REQUIRE(slmp.send(hex("500000FFFF03000E0010000114000064000000A801003412")));
+    REQUIRE(slmp.send(hex("500000FFFF03000E00100001140000640000A801003412")));
     CHECK(slmp.read_exactly(11) == hex("D00000FFFF030002000000"));
     CHECK(ask(link, record("@00RD01000001")) == record("@00RD001234"));
     // Host link WD0200 = 0xBEEF; SLMP 0401 reads D200 low byte first.
     CHECK(ask(link, record("@00WD0200BEEF")) == record("@00WD00"));
     REQUIRE(slmp.send(hex("500000FFFF03000C00100001040000C80000A80100")));
-    CHECK(slmp.read_exactly(12) == hex("D00000FFFF0300040000EFBE"));
+    CHECK(slmp.read_exactly(13) == hex("D00000FFFF030004000000EFBE"));
 }
 
 TEST_CASE("host link configuration errors name the key and the fix", "[hostlink]") {
@@ -171,7 +171,7 @@ TEST_CASE("host link configuration errors name the key and the fix", "[hostlink]
     CHECK_THAT(ports.err, Catch::Contains("/ports") && Catch::Contains("hostlink"));
     auto area = check(R"({"kind": "ladder-motion", "hostlink": {"areas": {"DX": {"size": 5}}}})");
     CHECK_THAT(area.err, Catch::Contains("/hostlink/areas/DX") && Catch::Contains("CIO, HR"));
-    auto size = check(R"({"kind": "ladder-motion", "hostlink": {"areas": {"DM": {"device": "D0", "size": 9999}}}})");
+    auto size = check(R"({"kind": "ladder-motion", "hostlink": {"areas": {"DM": {"device": "D5000", "size": 6000}}}})");
     CHECK(size.exit_code == 2);
     CHECK_THAT(size.err, Catch::Contains("areas/DM") && Catch::Contains("device_sizes"));
     auto good = check(R"({"kind": "ladder-motion", "hostlink": {"tcp_port": 9600, "refused_code": "15"}})");
