@@ -28,6 +28,7 @@ struct HostLinkConfig {
     bool enabled = false;
     PortConfig port{Transport::Tcp, 9600, DataCode::Ascii, 8};   // TCP only; 8 clients (inferred)
     std::shared_ptr<hostlink::Options> options;   // memory map, codes, image sizes; set when enabled
+    std::string serial_path;   // --serial: also serve it on a pseudo-terminal linked here (empty: none)
 };
 // Turns the host link on with default options unless it has some (--hostlink-port).
 void enable_hostlink(HostLinkConfig& hostlink);

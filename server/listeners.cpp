@@ -58,6 +58,7 @@ void Listeners::listen_hostlink(boost::asio::io_context& io, station::Station& s
                                   "; choose another port (\"hostlink\": {\"tcp_port\": ...} or --hostlink-port) "
                                   "or stop the program using it");
     }
+    if (!hostlink.serial_path.empty()) serial_ = std::make_unique<SerialPort>(io, *hostlink_, hostlink.serial_path);
 }
 
 void Listeners::listen_jw51cm(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
@@ -132,6 +133,7 @@ void Listeners::stop() {
     for (auto& l : tcp_) l->stop();
     for (auto& l : udp_) l->stop();
     if (hostlink_tcp_) hostlink_tcp_->stop();
+    if (serial_) serial_->stop();
     if (jw51cm_tcp_) jw51cm_tcp_->stop();
     if (jw51cm_udp_) jw51cm_udp_->stop();
 }

@@ -17,6 +17,7 @@
 #include "frontends/hostlink/host_link.hpp"
 #include "frontends/jw51cm/computer_link.hpp"
 #include "server/frontend_udp_listener.hpp"
+#include "server/serial_port.hpp"
 #include "server/tcp_listener.hpp"
 #include "server/udp_listener.hpp"
 #include "station/station.hpp"
@@ -34,6 +35,7 @@ public:
     std::vector<std::uint16_t> tcp_ports() const;   // bound ports, also when 0 was asked for
     std::vector<std::uint16_t> udp_ports() const;
     std::vector<std::uint16_t> hostlink_ports() const;   // empty when the station serves no Host Link
+    std::string serial_device() const { return serial_ ? serial_->device() : std::string(); }   // --serial's /dev/pts/N
     std::vector<std::uint16_t> jw51cm_tcp_ports() const;   // empty when it has no JW-51CM TCP port
     std::vector<std::uint16_t> jw51cm_udp_ports() const;
     void stop();
@@ -51,6 +53,7 @@ private:
     std::vector<std::unique_ptr<UdpListener>> udp_;
     std::unique_ptr<hostlink::HostLink> hostlink_;
     std::unique_ptr<TcpListener> hostlink_tcp_;
+    std::unique_ptr<SerialPort> serial_;
     std::unique_ptr<jw51cm::ComputerLink> jw51cm_;
     std::unique_ptr<TcpListener> jw51cm_tcp_;
     std::unique_ptr<FrontEndUdpListener> jw51cm_udp_;

@@ -39,6 +39,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("profile,p", po::value<std::string>(), "CPU profile: a built-in name (default R08CPU) or a profile .json file")
         ("config,c", po::value<std::string>(), "JSON configuration file (see docs/configuration.md)")
         ("hostlink-port", po::value<unsigned>(), "serve the Ladder Motion host link on this TCP port too; 0 = any free port (docs/hostlink.md)")
+        ("serial", po::value<std::string>(), "also serve the host link on a pseudo-terminal and link PATH to it (RS-232C-style tools; needs a host link)")
         ("tcp-port", po::value<std::vector<unsigned>>()->multitoken(), "TCP port(s) to serve; 0 = any free port (default 5000)")
         ("udp-port", po::value<std::vector<unsigned>>()->multitoken(), "UDP port(s) to serve; 0 = any free port (default 5000)")
         ("bind,b", po::value<std::string>(), "address to listen on (default 0.0.0.0)")
@@ -198,6 +199,12 @@ CommandLine parse_command_line(int argc, char** argv) {
         if (port > 65535) throw ConfigError("--hostlink-port " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
         config::enable_hostlink(cl.frontends.hostlink);
         cl.frontends.hostlink.port.port = static_cast<std::uint16_t>(port);
+    }
+    if (vm.count("serial")) {
+        if (!cl.frontends.hostlink.enabled)
+            throw ConfigError("--serial serves the Ladder Motion host link; give \"kind\": \"ladder-motion\", a \"hostlink\" "
+                              "section or --hostlink-port too");
+        cl.frontends.hostlink.serial_path = vm["serial"].as<std::string>();
     }
     if (cl.frontends.kind == config::StationKind::LadderMotion && !c.ports.empty())
         throw ConfigError("a ladder-motion station serves no SLMP ports; leave out --tcp-port/--udp-port (its port is "

@@ -80,6 +80,7 @@ void Server::write_ready_file() const {
         // A port kind with no ports is an empty list (port_list's "-" is for the log line).
         nlohmann::json ready{{"tcp", listeners_.tcp_ports()}, {"udp", listeners_.udp_ports()}};
         if (frontends_.hostlink.enabled) ready["hostlink"] = listeners_.hostlink_ports();
+        if (!listeners_.serial_device().empty()) ready["serial"] = listeners_.serial_device();
         if (frontends_.jw51cm.enabled)
             ready["jw51cm"] = {{"tcp", listeners_.jw51cm_tcp_ports()}, {"udp", listeners_.jw51cm_udp_ports()}};
         if (http_) ready["http"] = http_->port();

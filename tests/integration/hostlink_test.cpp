@@ -2,8 +2,13 @@
 // (docs/hostlink.md): a "kind": "ladder-motion" station, round trips in every
 // area (checked through the HTTP API on the mapped devices too), error codes,
 // silence, split and coalesced segments, garbage before a record, STX/ETX;
-// and a MELSEC station that serves SLMP and Host Link on one memory.
+// a MELSEC station that serves SLMP and Host Link on one memory; --serial.
 #include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <termios.h>
+#include <unistd.h>
 
 #include <string>
 
@@ -176,4 +181,34 @@ TEST_CASE("host link configuration errors name the key and the fix", "[hostlink]
     CHECK_THAT(size.err, Catch::Contains("areas/DM") && Catch::Contains("device_sizes"));
     auto good = check(R"({"kind": "ladder-motion", "hostlink": {"tcp_port": 9600, "refused_code": "15"}})");
     CHECK(good.exit_code == 0);
+}
+
+TEST_CASE("host link on a pseudo-terminal (--serial)", "[hostlink]") {
+    TempDir dir;
+    auto path = dir.path() / "ttyLM0";
+    auto options = ladder_motion();
+    options.args = {"--serial", path.string()};
+    SimProcess sim(options);
+    CHECK(sim.ready().at("serial").get<std::string>().rfind("/dev/pts/", 0) == 0);
+    int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY);
+    REQUIRE(fd >= 0);
+    termios raw{};
+    ::tcgetattr(fd, &raw);
+    ::cfmakeraw(&raw);
+    ::tcsetattr(fd, TCSANOW, &raw);
+    std::string request = "@00MM40*\r@00WD0100ABCD123452*\r";
+    REQUIRE(::write(fd, request.data(), request.size()) == static_cast<ssize_t>(request.size()));
+    std::string got;
+    auto deadline = std::chrono::steady_clock::now() + kReplyTimeout;
+    while (got.size() < 22 && std::chrono::steady_clock::now() < deadline) {
+        pollfd p{fd, POLLIN, 0};
+        if (::poll(&p, 1, remaining_ms(deadline)) <= 0) break;
+        char buffer[256];
+        auto n = ::read(fd, buffer, sizeof buffer);
+        if (n <= 0) break;
+        got.append(buffer, static_cast<std::size_t>(n));
+    }
+    ::close(fd);
+    CHECK(got == "@00MM001140*\r@00WD0053*\r");
+    CHECK(http_get(sim.http_port(), "/api/devices/D100").json()["values"] == nlohmann::json({0xABCD}));
 }
