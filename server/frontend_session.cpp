@@ -91,8 +91,13 @@ awaitable<void> FrontEndSession::serve() {
             if (step.consumed == 0) break;   // a handler that takes nothing would loop forever
         }
         pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(offset));
-        if (pending.empty()) partial_since_.reset();
-        else if (!partial_since_ || offset > 0) partial_since_ = std::chrono::steady_clock::now();
+        if (pending.empty()) {
+            partial_since_.reset();
+        } else if (!partial_since_ || offset > 0) {
+            // A request began in this read: the watchdog recomputes its deadline.
+            partial_since_ = std::chrono::steady_clock::now();
+            if (partial_timeout_.count() > 0) deadline_timer_.cancel();
+        }
         if (!out.empty()) {
             co_await asio::async_write(socket_, asio::buffer(out), asio::redirect_error(use_awaitable, ec));
             if (ec) {
@@ -115,9 +120,6 @@ awaitable<void> FrontEndSession::watch_deadlines() {
             deadline = *partial_since_ + partial_timeout_;
             partial = true;
         }
-        // A record begun later than this wake-up is seen at the next one: wake at least every 100 ms then.
-        if (partial_timeout_.count() > 0 && !partial_since_)
-            deadline = std::min(deadline, clock::now() + std::chrono::milliseconds(100));
         if (clock::now() >= deadline) {
             close_reason_ = partial ? "a started record was not whole " + std::to_string(partial_timeout_.count()) +
                                           " ms after its first byte (partial-frame timeout)"

@@ -212,3 +212,14 @@ TEST_CASE("host link on a pseudo-terminal (--serial)", "[hostlink]") {
     CHECK(got == "@00MM001140*\r@00WD0053*\r");
     CHECK(http_get(sim.http_port(), "/api/devices/D100").json()["values"] == nlohmann::json({0xABCD}));
 }
+
+TEST_CASE("host link: a record left unfinished closes the connection after the partial-frame timeout", "[hostlink]") {
+    SimProcess sim(ladder_motion(R"(, "partial_frame_timeout_ms": 300)"));
+    auto client = TcpClient::open(hostlink_port(sim));
+    CHECK(ask(client, "@00MM40*\r") == "@00MM001140*\r");   // whole records keep it open
+    REQUIRE(client.send("@00MM"));
+    CHECK(client.wait_closed(std::chrono::seconds(10)));
+    // The port still serves new clients.
+    auto again = TcpClient::open(hostlink_port(sim));
+    CHECK(ask(again, "@00MM40*\r") == "@00MM001140*\r");
+}
