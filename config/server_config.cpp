@@ -139,7 +139,7 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
     JsonAt root(json, source);
     root.only_keys({"profile", "bind", "ports", "max_request_bytes", "device_sizes", "devices", "log_level", "modules",
                     "networks", "cpus", "http", "cpu", "state_dir", "snapshot_interval_s", "restore",
-                    "clock_speed", "labels", "structures"});
+                    "clock_speed", "labels", "structures", "kind", "hostlink", "jw51cm"});   // the last three: parse_frontends_config
     ServerConfig c;
     if (root.has("profile")) c.profile = root["profile"].string();
     if (root.has("bind")) c.bind = root["bind"].string();

@@ -1,5 +1,8 @@
 #include "server/check_config.hpp"
 
+#include "frontends/hostlink/host_link.hpp"
+#include "frontends/jw51cm/computer_link.hpp"
+
 #include "station/asio.hpp"
 #include "station/station.hpp"
 #include "station/transports.hpp"
@@ -16,7 +19,7 @@ public:
 
 }  // namespace
 
-void check_configuration(const config::ServerConfig& config) {
+void check_configuration(const config::ServerConfig& config, const config::FrontEndsConfig& frontends) {
     auto checked = config;
     // What would touch disk is left out: the state directory would be created,
     // recordings truncated. Their paths are checked when the simulator starts.
@@ -27,6 +30,13 @@ void check_configuration(const config::ServerConfig& config) {
     NoTransports transports;   // outlives the station that points at it
     station::Station station(io, checked);
     station.connect(transports);
+    if (frontends.hostlink.enabled)
+        if (auto problem = frontends.hostlink.options->map.check(station.cpu().memory()); !problem.empty())
+            throw config::ConfigError(problem);
+    if (frontends.jw51cm.enabled) {
+        jw51cm::ComputerLink link(station.cpu(), *frontends.jw51cm.options);
+        if (auto problem = link.map().check(station.cpu().memory()); !problem.empty()) throw config::ConfigError(problem);
+    }
 }
 
 }  // namespace slmp::server

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "config/config.hpp"
+#include "config/frontend_config.hpp"
 
 namespace slmp::server {
 
@@ -11,6 +12,6 @@ namespace slmp::server {
 // values, modules, CPU No.2-4, "cpu" parameters, scenarios checked against
 // the CPU, --snapshot read) and throws config::ConfigError with the same
 // one-line message a start would give.
-void check_configuration(const config::ServerConfig& config);
+void check_configuration(const config::ServerConfig& config, const config::FrontEndsConfig& frontends = {});
 
 }  // namespace slmp::server

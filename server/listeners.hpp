@@ -1,5 +1,6 @@
-// The SLMP ports of one station: a TcpListener or UdpListener per configured
-// port, bound at construction. They are the station's Transports, so a
+// The ports of one station: a TcpListener or UdpListener per configured SLMP
+// port, and the host-link port when the station serves Host Link (its
+// HostLink front end answers on the same CPU memory), bound at construction. They are the station's Transports, so a
 // scenario's power cut closes the TCP ports and a restarted CPU gives UDP
 // clients fresh sessions.
 #pragma once
@@ -12,6 +13,11 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
+#include "config/frontend_config.hpp"
+#include "frontends/hostlink/host_link.hpp"
+#include "frontends/jw51cm/computer_link.hpp"
+#include "server/frontend_udp_listener.hpp"
+#include "server/serial_port.hpp"
 #include "server/tcp_listener.hpp"
 #include "server/udp_listener.hpp"
 #include "station/station.hpp"
@@ -24,18 +30,33 @@ public:
     // Binds every port of `config` on `bind`; throws config::ConfigError naming
     // the port and the fix when one cannot be had.
     Listeners(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
-              const boost::asio::ip::address& bind);
+              const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind);
 
     std::vector<std::uint16_t> tcp_ports() const;   // bound ports, also when 0 was asked for
     std::vector<std::uint16_t> udp_ports() const;
+    std::vector<std::uint16_t> hostlink_ports() const;   // empty when the station serves no Host Link
+    std::string serial_device() const { return serial_ ? serial_->device() : std::string(); }   // --serial's /dev/pts/N
+    std::vector<std::uint16_t> jw51cm_tcp_ports() const;   // empty when it has no JW-51CM TCP port
+    std::vector<std::uint16_t> jw51cm_udp_ports() const;
     void stop();
 
     void refuse_connections(bool refusing) override;
     void restart_sessions() override;
 
 private:
+    void listen_hostlink(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
+                         const config::HostLinkConfig& hostlink, const boost::asio::ip::address& bind);
+    void listen_jw51cm(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
+                       const config::Jw51cmConfig& jw, const boost::asio::ip::address& bind);
+
     std::vector<std::unique_ptr<TcpListener>> tcp_;
     std::vector<std::unique_ptr<UdpListener>> udp_;
+    std::unique_ptr<hostlink::HostLink> hostlink_;
+    std::unique_ptr<TcpListener> hostlink_tcp_;
+    std::unique_ptr<SerialPort> serial_;
+    std::unique_ptr<jw51cm::ComputerLink> jw51cm_;
+    std::unique_ptr<TcpListener> jw51cm_tcp_;
+    std::unique_ptr<FrontEndUdpListener> jw51cm_udp_;
 };
 
 // "5000,5001", or "-" for none (log lines and the ready file).

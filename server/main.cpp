@@ -27,12 +27,12 @@ int main(int argc, char** argv) {
         if (cl.exit_now) return 0;
         spdlog::set_level(log_level(cl.config.log_level));
         if (cl.check_only) {
-            slmp::server::check_configuration(cl.config);
+            slmp::server::check_configuration(cl.config, cl.frontends);
             std::cout << "slmp-sim: configuration OK\n";
             return 0;
         }
         spdlog::set_pattern("%Y-%m-%d %H:%M:%S.%e %^%-5l%$ %v");
-        slmp::server::Server server(cl.config);
+        slmp::server::Server server(cl.config, cl.frontends);
         server.run();
         return 0;
     } catch (const slmp::config::ConfigError& e) {

@@ -38,6 +38,8 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("list-profiles", "list the built-in CPU profiles and exit")
         ("profile,p", po::value<std::string>(), "CPU profile: a built-in name (default R08CPU) or a profile .json file")
         ("config,c", po::value<std::string>(), "JSON configuration file (see docs/configuration.md)")
+        ("hostlink-port", po::value<unsigned>(), "serve the Ladder Motion host link on this TCP port too; 0 = any free port (docs/hostlink.md)")
+        ("serial", po::value<std::string>(), "also serve the host link on a pseudo-terminal and link PATH to it (RS-232C-style tools; needs a host link)")
         ("tcp-port", po::value<std::vector<unsigned>>()->multitoken(), "TCP port(s) to serve; 0 = any free port (default 5000)")
         ("udp-port", po::value<std::vector<unsigned>>()->multitoken(), "UDP port(s) to serve; 0 = any free port (default 5000)")
         ("bind,b", po::value<std::string>(), "address to listen on (default 0.0.0.0)")
@@ -102,8 +104,14 @@ CommandLine parse_command_line(int argc, char** argv) {
         if (vm.count("config")) throw ConfigError("--check-config FILE checks FILE; leave --config out");
         cl.check_only = true;
         c = config::load_server_config(vm["check-config"].as<std::string>());
+        cl.frontends = config::load_frontends_config(vm["check-config"].as<std::string>());
     }
-    if (vm.count("config")) c = config::load_server_config(vm["config"].as<std::string>());
+    if (vm.count("config")) {
+        c = config::load_server_config(vm["config"].as<std::string>());
+        cl.frontends = config::load_frontends_config(vm["config"].as<std::string>());
+    }
+    // A Ladder Motion or Sharp JW station has no SLMP port (not even the default 5000).
+    if (cl.frontends.kind != config::StationKind::Melsec) c.ports.clear();
     if (vm.count("profile")) c.profile = vm["profile"].as<std::string>();
     if (vm.count("bind")) c.bind = vm["bind"].as<std::string>();
     if (vm.count("tcp-port")) replace_ports(c, Transport::Tcp, vm["tcp-port"].as<std::vector<unsigned>>(), "tcp-port");
@@ -186,7 +194,27 @@ CommandLine parse_command_line(int argc, char** argv) {
         c.clock_frozen = mode == "frozen";
     }
     if (vm.count("snapshot")) c.snapshot_file = vm["snapshot"].as<std::string>();
-    if (c.ports.empty()) throw ConfigError("no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
+    if (vm.count("hostlink-port")) {
+        auto port = vm["hostlink-port"].as<unsigned>();
+        if (port > 65535) throw ConfigError("--hostlink-port " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
+        config::enable_hostlink(cl.frontends.hostlink);
+        cl.frontends.hostlink.port.port = static_cast<std::uint16_t>(port);
+    }
+    if (vm.count("serial")) {
+        if (!cl.frontends.hostlink.enabled)
+            throw ConfigError("--serial serves the Ladder Motion host link; give \"kind\": \"ladder-motion\", a \"hostlink\" "
+                              "section or --hostlink-port too");
+        cl.frontends.hostlink.serial_path = vm["serial"].as<std::string>();
+    }
+    if (cl.frontends.kind == config::StationKind::LadderMotion && !c.ports.empty())
+        throw ConfigError("a ladder-motion station serves no SLMP ports; leave out --tcp-port/--udp-port (its port is "
+                          "--hostlink-port or \"hostlink\": {\"tcp_port\": ...}), or use \"kind\": \"melsec\" to serve both");
+    if (cl.frontends.kind == config::StationKind::SharpJw && (!c.ports.empty() || cl.frontends.hostlink.enabled))
+        throw ConfigError("a sharp-jw station serves only the JW-51CM computer link; leave out --tcp-port/--udp-port/"
+                          "--hostlink-port (its ports are \"jw51cm\": {\"tcp_port\": ..., \"udp_port\": ...}), or use "
+                          "\"kind\": \"melsec\" to serve several protocols");
+    if (c.ports.empty() && !cl.frontends.hostlink.enabled && !cl.frontends.jw51cm.enabled)
+        throw ConfigError("no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
     return cl;
 }
 

@@ -6,11 +6,13 @@
 #include <string>
 
 #include "config/config.hpp"
+#include "config/frontend_config.hpp"
 
 namespace slmp::server {
 
 struct CommandLine {
     config::ServerConfig config;
+    config::FrontEndsConfig frontends;   // the station's kind and its host-link / JW-51CM ports
     bool exit_now = false;      // --help, --version, --list-profiles: printed already
     bool check_only = false;    // --check-config: check the configuration, start nothing
 };

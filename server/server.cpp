@@ -23,8 +23,11 @@ asio::ip::address bind_address(const std::string& text) {
 
 }  // namespace
 
-Server::Server(const config::ServerConfig& config)
-    : config_(config), station_(io_, config), listeners_(io_, station_, config_, bind_address(config_.bind)) {
+Server::Server(const config::ServerConfig& config, const config::FrontEndsConfig& frontends)
+    : config_(config),
+      frontends_(frontends),
+      station_(io_, config),
+      listeners_(io_, station_, config_, frontends_, bind_address(config_.bind)) {
     station_.connect(listeners_);
     if (config_.http.enabled) {
         control::PortList ports{config_.bind, listeners_.tcp_ports(), listeners_.udp_ports(), 0};
@@ -37,6 +40,12 @@ void Server::run() {
     const auto& profile = station_.cpu().profile();
     spdlog::info("slmp-sim 0.1.0: {} ({}, model code {:04X}) on {} — TCP {} / UDP {}", profile.name, profile.type_name,
                  profile.model_code, config_.bind, port_list(listeners_.tcp_ports()), port_list(listeners_.udp_ports()));
+    if (frontends_.hostlink.enabled)
+        spdlog::info("{} station: Ladder Motion host link on TCP {}", config::kind_name(frontends_.kind),
+                     port_list(listeners_.hostlink_ports()));
+    if (frontends_.jw51cm.enabled)
+        spdlog::info("{} station: JW-51CM computer link on TCP {} / UDP {}", config::kind_name(frontends_.kind),
+                     port_list(listeners_.jw51cm_tcp_ports()), port_list(listeners_.jw51cm_udp_ports()));
     if (http_)
         spdlog::info("web monitor and HTTP API on http://{}:{}/", config_.http.bind.empty() ? config_.bind : config_.http.bind,
                      http_->port());
@@ -70,6 +79,10 @@ void Server::write_ready_file() const {
     {
         // A port kind with no ports is an empty list (port_list's "-" is for the log line).
         nlohmann::json ready{{"tcp", listeners_.tcp_ports()}, {"udp", listeners_.udp_ports()}};
+        if (frontends_.hostlink.enabled) ready["hostlink"] = listeners_.hostlink_ports();
+        if (!listeners_.serial_device().empty()) ready["serial"] = listeners_.serial_device();
+        if (frontends_.jw51cm.enabled)
+            ready["jw51cm"] = {{"tcp", listeners_.jw51cm_tcp_ports()}, {"udp", listeners_.jw51cm_udp_ports()}};
         if (http_) ready["http"] = http_->port();
         ready["pid"] = getpid();
         std::ofstream(temp) << ready.dump() << "\n";

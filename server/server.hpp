@@ -7,6 +7,7 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
+#include "config/frontend_config.hpp"
 #include "control/http_server.hpp"
 #include "server/listeners.hpp"
 #include "station/station.hpp"
@@ -17,7 +18,7 @@ class Server {
 public:
     // Builds the station and binds every port; throws config::ConfigError or
     // boost::system::system_error with a message that names the problem.
-    explicit Server(const config::ServerConfig& config);
+    Server(const config::ServerConfig& config, const config::FrontEndsConfig& frontends = {});
 
     // Serves until SIGINT or SIGTERM, then closes everything cleanly.
     void run();
@@ -28,6 +29,7 @@ private:
     void wait_for_snapshot_signal();
 
     config::ServerConfig config_;
+    config::FrontEndsConfig frontends_;
     boost::asio::io_context io_{1};
     station::Station station_;
     Listeners listeners_;

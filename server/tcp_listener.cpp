@@ -10,8 +10,14 @@ namespace asio = boost::asio;
 using asio::ip::tcp;
 
 TcpListener::TcpListener(asio::io_context& io, station::Station& station, const config::PortConfig& port,
-                         const asio::ip::address& bind)
-    : io_(io), station_(station), config_(port), endpoint_(bind, port.port), acceptor_(io) {
+                         const asio::ip::address& bind, SessionFactory factory)
+    : io_(io), station_(station), config_(port), endpoint_(bind, port.port), acceptor_(io), factory_(std::move(factory)) {
+    if (!factory_)
+        factory_ = [this](tcp::socket socket, std::function<void(StreamSession*)> on_closed,
+                          std::function<std::size_t()> connections) -> std::shared_ptr<StreamSession> {
+            return std::make_shared<TcpSession>(std::move(socket), station_, config_, std::move(on_closed),
+                                                std::move(connections));
+        };
     listen();   // throws boost::system::system_error when the port cannot be had
     endpoint_ = acceptor_.local_endpoint();
 }
@@ -36,9 +42,8 @@ asio::awaitable<void> TcpListener::accept_loop() {
             continue;
         }
         if (over_address_cap(socket)) continue;   // the socket closes as it goes out of scope
-        auto session = std::make_shared<TcpSession>(std::move(socket), station_, config_,
-                                                    [this](TcpSession* s) { session_closed(s); },
-                                                    [this] { return sessions_.size(); });
+        auto session = factory_(std::move(socket), [this](StreamSession* s) { session_closed(s); },
+                                [this] { return sessions_.size(); });
         sessions_.emplace(session.get(), session);
         if (config_.max_connections_per_address > 0) ++sessions_per_address_[session->peer().address];
         session->start();
@@ -64,7 +69,7 @@ bool TcpListener::over_address_cap(const tcp::socket& socket) const {
     return true;
 }
 
-void TcpListener::session_closed(TcpSession* session) {
+void TcpListener::session_closed(StreamSession* session) {
     if (config_.max_connections_per_address > 0) {
         auto found = sessions_per_address_.find(session->peer().address);
         if (found != sessions_per_address_.end() && --found->second == 0) sessions_per_address_.erase(found);

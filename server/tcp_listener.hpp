@@ -13,6 +13,7 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
+#include "server/stream_session.hpp"
 #include "server/tcp_session.hpp"
 #include "station/station.hpp"
 
@@ -20,8 +21,9 @@ namespace slmp::server {
 
 class TcpListener {
 public:
+    // Serves SLMP (TcpSession) unless `factory` builds another protocol's sessions.
     TcpListener(boost::asio::io_context& io, station::Station& station, const config::PortConfig& port,
-                const boost::asio::ip::address& bind);
+                const boost::asio::ip::address& bind, SessionFactory factory = {});
 
     std::uint16_t port() const { return endpoint_.port(); }   // the bound port, also when 0 was asked for
     void stop();
@@ -33,7 +35,7 @@ private:
     void listen();
     void reopen();   // listen() again after the port was closed; logs instead of throwing
     boost::asio::awaitable<void> accept_loop();
-    void session_closed(TcpSession* session);
+    void session_closed(StreamSession* session);
     bool over_address_cap(const boost::asio::ip::tcp::socket& socket) const;
 
     boost::asio::io_context& io_;
@@ -41,7 +43,8 @@ private:
     config::PortConfig config_;
     boost::asio::ip::tcp::endpoint endpoint_;
     boost::asio::ip::tcp::acceptor acceptor_;
-    std::unordered_map<TcpSession*, std::shared_ptr<TcpSession>> sessions_;
+    SessionFactory factory_;
+    std::unordered_map<StreamSession*, std::shared_ptr<StreamSession>> sessions_;
     std::unordered_map<std::string, unsigned> sessions_per_address_;   // only with a per-address cap
     bool stopping_ = false;
     bool refusing_ = false;

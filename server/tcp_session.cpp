@@ -22,7 +22,7 @@ protocol::DataCodePolicy to_policy(config::DataCode code) {
 }
 
 TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Station& station, const config::PortConfig& port,
-                       std::function<void(TcpSession*)> on_closed, std::function<std::size_t()> connections)
+                       std::function<void(StreamSession*)> on_closed, std::function<std::size_t()> connections)
     : socket_(std::move(socket)),
       station_(station),
       policy_(to_policy(port.data_code)),

@@ -15,19 +15,20 @@
 
 #include "config/config.hpp"
 #include "protocol/peer.hpp"
+#include "server/stream_session.hpp"
 #include "station/station.hpp"
 
 namespace slmp::server {
 
-class TcpSession : public std::enable_shared_from_this<TcpSession> {
+class TcpSession final : public StreamSession, public std::enable_shared_from_this<TcpSession> {
 public:
     TcpSession(boost::asio::ip::tcp::socket socket, station::Station& station, const config::PortConfig& port,
-               std::function<void(TcpSession*)> on_closed, std::function<std::size_t()> connections);
+               std::function<void(StreamSession*)> on_closed, std::function<std::size_t()> connections);
 
-    void start();
-    void close();   // from the server at shutdown, or the watchdog
+    void start() override;
+    void close() override;   // from the server at shutdown, or the watchdog
     void close(const std::string& why);   // from the HTTP API; `why` is logged
-    const protocol::Peer& peer() const { return peer_; }
+    const protocol::Peer& peer() const override { return peer_; }
 
 private:
     boost::asio::awaitable<void> serve();
@@ -48,7 +49,7 @@ private:
     protocol::Session session_;
     protocol::Peer peer_;   // the client, and the simulator's port it reached
     std::string close_reason_ = "closed by the client";
-    std::function<void(TcpSession*)> on_closed_;
+    std::function<void(StreamSession*)> on_closed_;
     std::function<std::size_t()> connections_;   // the port's open connections (commands per connection)
     bool closed_ = false;
 };

@@ -1,0 +1,84 @@
+// A Sharp JW CPU's JW-51CM computer link (sharp-jw51cm.md): a 40-byte header,
+// ID 47/45, ATTR, COM, RSLT; no length field, so a request's length comes from
+// its COM row (§3.2). One object per station: the write-permission mode, the
+// clock, system memory and the program are the unit's and the CPU's, shared
+// by every connection; the RUN/STOP hold is the station's operating state.
+// Knows no sockets and no SLMP.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "devicemodel/cpu.hpp"
+#include "frontends/jw51cm/memory_map.hpp"
+
+namespace slmp::jw51cm {
+
+inline constexpr std::size_t kHeaderBytes = 40;
+inline constexpr std::uint8_t kCommandId = 0x47, kResponseId = 0x45;
+inline constexpr std::size_t kMaxData = 1024;   // §4.1: bytes per read/write
+// The station's operating state knows its STOP holder by client id: this one is the JW-51CM unit.
+inline constexpr devicemodel::ClientId kUnitClient = 0x4A57'3531'434D'0000ULL;
+
+struct Options {
+    std::uint32_t file_bytes = 16384;          // files 1–7 (inferred default)
+    std::uint32_t timers = 1024;               // T/C 0000–1777 octal
+    std::map<std::uint32_t, std::uint8_t> timer_attributes;   // TADR -> ATTR (§7.2 table); others 00 "unused"
+    std::uint32_t system_bytes = 02200;        // #0000–#2177
+    std::uint32_t program_steps = 0x7E00;      // per PSEG (08, 09)
+};
+
+enum class Rslt : std::uint8_t {
+    Ok = 0x00, Format = 0x01, NotStopped = 0x06, WriteMode = 0x10, TimerWhileStopped = 0x13,
+};
+
+class ComputerLink {
+public:
+    using Clock = std::function<std::chrono::system_clock::time_point()>;
+    ComputerLink(devicemodel::Cpu& cpu, Options options, Clock clock = {});
+
+    struct Result {
+        enum class Kind { NeedMore, Respond, Drop } kind = Kind::NeedMore;
+        std::size_t consumed = 0;
+        std::vector<std::uint8_t> response;
+        std::uint8_t command = 0;
+    };
+    // One request from the front of a TCP stream. `whole_segment`: the stream
+    // is exactly what has arrived (E8 swallows one more byte only when it came
+    // in the same segment, §7.2).
+    Result handle_stream(std::span<const std::uint8_t> stream);
+    // One UDP datagram: one request, its length must be exactly the COM's.
+    Result handle_datagram(std::span<const std::uint8_t> datagram);
+
+    std::uint8_t write_mode() const { return write_mode_; }
+    const MemoryMap& map() const { return map_; }
+    devicemodel::Cpu& cpu() { return cpu_; }
+    const Options& options() const { return options_; }
+
+    // The unit's state, for the handlers.
+    std::uint8_t write_mode_ = 0;   // §6.1: 0 at power-on, unit-wide
+    std::vector<std::uint8_t> system_memory;
+    std::vector<std::uint8_t> program;   // PSEG 08 then 09, 2 bytes a step
+    std::chrono::seconds clock_offset{0};   // the PLC calendar = host UTC + offset
+    std::optional<std::chrono::system_clock::time_point> clock_stopped;   // B3 CTRL 01
+    std::chrono::system_clock::time_point now() const { return clock_(); }
+
+private:
+    Result answer(std::span<const std::uint8_t> request, std::size_t length);
+
+    devicemodel::Cpu& cpu_;
+    Options options_;
+    MemoryMap map_;
+    Clock clock_;
+};
+
+// The response frame for `request`'s header and COM: RSLT, then `text` when RSLT is 00.
+std::vector<std::uint8_t> response_frame(std::span<const std::uint8_t> request, Rslt rslt,
+                                         std::span<const std::uint8_t> text = {});
+
+}  // namespace slmp::jw51cm
