@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "frames.hpp"
 #include "link.hpp"
@@ -265,4 +266,42 @@ TEST_CASE("files: capacity, write-protect and the state directory", "[files][tcp
     CHECK(code(link, client::file_new(w.options(), {true, 4, "B.BIN", ""}, 2001)) == 0x4029);
     // Drive 4 without a folder lives in <state-dir>/drives/4.
     CHECK(fs::file_size(state / "drives" / "4" / "A.BIN") == 6000);
+}
+
+TEST_CASE("files: kill -9 during a stream of 1829 writes leaves every file whole", "[files][tcp][crash]") {
+    // Each 1829 writes the whole 1920-byte file with one value; after a kill the
+    // file holds one value throughout, at least the last acknowledged and at
+    // most the last sent (the last write is in flight when the kill lands).
+    TempDir data;
+    auto folder = data.path() / "d";
+    fs::create_directories(folder);
+    put(folder / "LOG.BIN", Bytes(1920, 0));
+    const Wire w{FrameKind::E3, Codec::Binary, 0};
+    client::FileTarget log{true, 4, "LOG.BIN", ""};
+    std::mt19937 random(12);   // fixed seed: the same kill moments every run
+    std::uint8_t last_sent = 0, last_acknowledged = 0;
+    for (int round = 0; round < 12; ++round) {
+        INFO("round " << round);
+        SimProcess sim(with_args({"--profile", "R08CPU", "--drive", "4=" + folder.string()}));
+        TcpLink link(sim.tcp_port());
+        auto content = slurp(folder / "LOG.BIN");
+        REQUIRE(content.size() == 1920);
+        CHECK(std::all_of(content.begin(), content.end(), [&](std::uint8_t b) { return b == content[0]; }));
+        CHECK(content[0] >= last_acknowledged);
+        CHECK(content[0] <= last_sent);
+        last_acknowledged = content[0];
+        CHECK(list_all(link, w, true, 4) == std::vector<std::string>{"LOG.BIN"});   // no temporary file shows
+        auto opened = ask(link, client::file_open(w.options(), log, true));
+        REQUIRE(opened.end_code == 0);
+        auto pointer = *client::parse_file_pointer(opened);
+        const int writes = std::uniform_int_distribution<int>(5, 15)(random);
+        for (int i = 0; i < writes; ++i) {
+            ++last_sent;
+            REQUIRE(code(link, client::file_write(w.options(), pointer, 0, Bytes(1920, last_sent))) == 0);
+            last_acknowledged = last_sent;
+        }
+        ++last_sent;
+        link.client().send(client::file_write(w.options(), pointer, 0, Bytes(1920, last_sent)));   // in flight
+        sim.stop(SIGKILL);
+    }
 }
