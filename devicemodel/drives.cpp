@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 
 namespace slmp::devicemodel {
 namespace {
@@ -301,12 +302,14 @@ FileFault DriveSet::list(std::uint16_t number, const std::string& dir, NameForm 
         return FileFault::None;
     }
     std::size_t bytes = 6;
+    // host_list asks for everything (count FFFFH): no response to fit.
+    const std::size_t cap = count == 0xFFFF ? SIZE_MAX : kMaxListingBytes;
     out.last_number = static_cast<std::uint32_t>(size);
     for (std::size_t slot = start; slot <= size; ++slot) {
         auto entry = entry_for(slot);
         if (!entry) continue;
         auto entry_bytes = 23 + 2 * std::max<std::size_t>(1, entry->name.size());
-        if (out.entries.size() == count || bytes + entry_bytes > kMaxListingBytes) {
+        if (out.entries.size() == count || bytes + entry_bytes > cap) {
             out.last_number = out.entries.empty() ? static_cast<std::uint32_t>(slot - 1) : out.entries.back().number;
             return FileFault::None;
         }
