@@ -72,6 +72,10 @@ void attach_drives(devicemodel::Cpu& cpu, const ServerConfig& config) {
             if (d->present) spec.present = *d->present;
             if (!d->dir.empty()) dir = d->dir;
         }
+        // A folder for a card slot means a card is in it (unless "present" says otherwise).
+        bool present_given = false;
+        for (const auto* d : all) present_given = present_given || d->present.has_value();
+        if (!dir.empty() && !present_given) spec.present = true;
         std::unique_ptr<devicemodel::FileStore> store;
         if (!dir.empty()) {
             std::error_code ec;
