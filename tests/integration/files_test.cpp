@@ -10,6 +10,7 @@
 #include <random>
 
 #include "frames.hpp"
+#include "http_client.hpp"
 #include "link.hpp"
 #include "protocol/client_files.hpp"
 #include "sim_process.hpp"
@@ -305,4 +306,52 @@ TEST_CASE("files: kill -9 during a stream of 1829 writes leaves every file whole
         link.client().send(client::file_write(w.options(), pointer, 0, Bytes(1920, last_sent)));   // in flight
         sim.stop(SIGKILL);
     }
+}
+
+TEST_CASE("files: the HTTP API lists drives and folders, moves files and releases locks", "[files][http]") {
+    TempDir data;
+    auto folder = data.path() / "d";
+    fs::create_directories(folder / "LOGS");
+    SimProcess sim(with_args({"--profile", "R08CPU", "--drive", "4=" + folder.string()}));
+    auto port = sim.http_port();
+    auto drives = http_get(port, "/api/drives").json()["drives"];
+    REQUIRE(drives.size() == 4);
+    CHECK(drives[0]["drive"] == 1);
+    CHECK(drives[0]["alias_of"] == 3);
+    CHECK(drives[3]["drive"] == 4);
+    CHECK(drives[3]["location"] == folder.string());
+    CHECK(drives[1]["location"] == "memory");
+
+    std::string body = "a,b\n1,2\n";
+    body += std::string(1, '\0') + "\xff";
+    auto put_reply = http_put(port, "/api/drives/4/file?path=LOGS/A.CSV", body);
+    REQUIRE(put_reply.status == 200);
+    CHECK(slurp(folder / "LOGS" / "A.CSV") == Bytes(body.begin(), body.end()));
+    auto entries = http_get(port, "/api/drives/4/files?path=LOGS").json()["entries"];
+    REQUIRE(entries.size() == 3);
+    CHECK(entries[2]["name"] == "A.CSV");
+    CHECK(entries[2]["number"] == 3);
+    CHECK(entries[2]["size"] == body.size());
+    auto got = http_get(port, "/api/drives/4/file?path=LOGS%5CA.CSV");
+    CHECK(got.status == 200);
+    CHECK(got.body == body);
+    CHECK(http_get(port, "/api/drives/4/file?path=../x").status == 400);
+    CHECK(http_get(port, "/api/drives/4/file?path=NONE.CSV").status == 404);
+    CHECK(http_get(port, "/api/drives/0/files").status == 404);
+
+    // A lock taken over SLMP shows, blocks an upload, and goes with DELETE.
+    const Wire w{FrameKind::E3, Codec::Binary, 0};
+    TcpLink link(sim.tcp_port());
+    REQUIRE(code(link, client::file_open(w.options(), {true, 4, "LOGS\\A.CSV", ""}, true)) == 0);
+    auto locks = http_get(port, "/api/drives/locks").json()["locks"];
+    REQUIRE(locks.size() == 1);
+    CHECK(locks[0]["path"] == "LOGS\\A.CSV");
+    CHECK(locks[0]["mode"] == "write");
+    CHECK(http_put(port, "/api/drives/4/file?path=LOGS/A.CSV", "x").status == 409);
+    CHECK(http(port, "DELETE", "/api/drives/locks/0").status == 200);
+    CHECK(http_get(port, "/api/drives/locks").json()["locks"].empty());
+    CHECK(http(port, "DELETE", "/api/drives/locks/0").status == 404);
+    auto metrics = http_get(port, "/metrics").body;
+    CHECK(metrics.find("slmp_file_drive_used_bytes{drive=\"4\"} " + std::to_string(body.size())) != std::string::npos);
+    CHECK(metrics.find("slmp_open_files 0") != std::string::npos);
 }
