@@ -87,6 +87,9 @@ TEST_CASE("command table: which port families refuse which commands (hardware-be
     CHECK(commands_refused_by(Family::L) == built_in_q_l);
     std::set<std::uint16_t> fx5{0x0613, 0x0801, 0x0802, 0x1613};
     fx5.insert(labels.begin(), labels.end());
+    // File control 1810-182A: not in the FX5 port's command list (inferred; the
+    // FX5 reaches its SD card by FTP; docs/files.md).
+    fx5.insert({0x1810, 0x1811, 0x1820, 0x1822, 0x1824, 0x1825, 0x1826, 0x1827, 0x1828, 0x1829, 0x182A});
     CHECK(commands_refused_by(Family::IQF) == fx5);
 }
 
