@@ -150,6 +150,18 @@ struct LabelsConfig {
     std::vector<LabelEntry> labels;
 };
 
+// A file drive served from a host folder or with other limits ("drives" key,
+// --drive N=DIR; docs/files.md). Unset values keep the family's defaults.
+struct DriveConfig {
+    std::uint16_t number = 0;
+    std::string dir;                       // empty: in memory (or <state-dir>/drives/<n>)
+    std::optional<std::uint64_t> capacity;
+    std::optional<bool> write_protect;     // the SD card's LOCK switch
+    std::optional<bool> present;
+    std::vector<std::pair<std::string, std::string>> passwords;   // file name -> file password
+    std::string where;                     // the key or option, for messages
+};
+
 struct ServerConfig {
     std::string profile = "R08CPU";
     std::string bind = "0.0.0.0";
@@ -172,6 +184,7 @@ struct ServerConfig {
     bool clock_frozen = false;             // --clock frozen: no scan until POST /api/clock/step or PUT /api/clock
     std::string snapshot_file;             // --snapshot: start from a station snapshot saved to a file (docs/ci.md)
     LabelsConfig labels;                   // "labels", "structures", --labels files
+    std::vector<DriveConfig> drives;       // "drives", --drive: file drives of CPU No.1 (docs/files.md)
 };
 inline constexpr double kMinClockSpeed = 0.01, kMaxClockSpeed = 1000;
 inline constexpr const char* kClockSpeedFix = "use a factor from 0.01 to 1000 (default 1: real time)";
@@ -186,6 +199,11 @@ LabelsConfig load_labels_file(const std::filesystem::path& file);
 // Declares the labels on CPU No.1: types, devices (kind, range, overlap), the
 // label area. Throws ConfigError naming the file, the key and the fix.
 void declare_labels(devicemodel::Cpu& cpu, const LabelsConfig& labels);
+
+// Gives CPU No.1 its file drives: the family's table, the "drives" / --drive
+// folders, <state-dir>/drives/<n> when a state directory is set. Throws
+// ConfigError naming the key and the fix (unknown drive, folder missing).
+void attach_drives(devicemodel::Cpu& cpu, const ServerConfig& config);
 
 // The profile named by the configuration, with its device-size overrides applied.
 Profile resolve_profile(const ServerConfig& config);

@@ -4,6 +4,7 @@
 
 #include "config/config.hpp"
 #include "config/config_parts.hpp"
+#include "config/drive_config.hpp"
 #include "config/json_path.hpp"
 
 namespace slmp::config {
@@ -139,7 +140,7 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
     JsonAt root(json, source);
     root.only_keys({"profile", "bind", "ports", "max_request_bytes", "device_sizes", "devices", "log_level", "modules",
                     "networks", "cpus", "http", "cpu", "state_dir", "snapshot_interval_s", "restore",
-                    "clock_speed", "labels", "structures", "kind", "hostlink", "jw51cm"});   // the last three: parse_frontends_config
+                    "clock_speed", "labels", "structures", "drives", "kind", "hostlink", "jw51cm"});   // the last three: parse_frontends_config
     ServerConfig c;
     if (root.has("profile")) c.profile = root["profile"].string();
     if (root.has("bind")) c.bind = root["bind"].string();
@@ -162,6 +163,7 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
     }
     if (root.has("http")) c.http = http_config(root["http"]);
     parse_hardware(root, c);
+    parse_drives(root, c);
     parse_cpu_runtime(root, c);
     parse_labels(root, std::filesystem::path(source).parent_path(), c.labels);
     return c;

@@ -42,6 +42,7 @@ void add_snapshot_endpoints(Router& router, Api& api);     // /api/snapshots[/{n
 void add_clock_endpoints(Router& router, Api& api);        // /api/clock[/step]
 void add_label_endpoints(Router& router, Api& api);        // /api/labels[/{name}]
 void add_buffer_endpoints(Router& router, Api& api);       // /api/buffer[/{module}/{address}]
+void add_file_endpoints(Router& router, Api& api);         // /api/drives[/{drive}/files|file, /locks[/{pointer}]]
 void add_scenario_endpoints(Router& router, Api& api);     // /api/scenarios[/{name}]
 void add_fault_endpoints(Router& router, Api& api);        // /api/faults[/{name}]
 void add_recording_endpoints(Router& router, Api& api);    // /api/recording

@@ -58,6 +58,7 @@ HttpServer::HttpServer(asio::io_context& io, station::Station& station, const co
     add_snapshot_endpoints(router_, api_);
     add_clock_endpoints(router_, api_);
     add_buffer_endpoints(router_, api_);
+    add_file_endpoints(router_, api_);
     add_label_endpoints(router_, api_);
     add_scenario_endpoints(router_, api_);
     add_fault_endpoints(router_, api_);

@@ -3,6 +3,8 @@
 #include <cstdio>
 
 #include "control/hex_text.hpp"
+#include "devicemodel/drives.hpp"
+
 namespace slmp::control {
 
 using protocol::Outcome;
@@ -126,6 +128,21 @@ std::string Metrics::render() const {
     out += "slmp_connections_accepted_total " + std::to_string(accepted_) + "\n";
     header(out, "slmp_connections_closed_total", "counter", "TCP connections closed (by either side).");
     out += "slmp_connections_closed_total " + std::to_string(closed_) + "\n";
+
+    // File drives (docs/files.md): what 1810-182A act on; the requests themselves
+    // are in slmp_requests_total by command and end code.
+    header(out, "slmp_file_drive_used_bytes", "gauge", "Bytes of file data on each file drive of CPU No.1.");
+    std::string capacity;
+    for (const auto& d : station_.cpu().drives().drives()) {
+        if (d.spec.alias_of) continue;
+        auto drive = "{drive=\"" + std::to_string(d.spec.number) + "\"} ";
+        out += "slmp_file_drive_used_bytes" + drive + std::to_string(d.used) + "\n";
+        capacity += "slmp_file_drive_capacity_bytes" + drive + std::to_string(d.spec.capacity) + "\n";
+    }
+    header(out, "slmp_file_drive_capacity_bytes", "gauge", "Capacity of each file drive of CPU No.1.");
+    out += capacity;
+    header(out, "slmp_open_files", "gauge", "Files open (locked) with 1827 now, on every drive.");
+    out += "slmp_open_files " + std::to_string(station_.cpu().drives().open_files().size()) + "\n";
 
     // The CPU's own view (SD203 and SD520-SD525), so a dashboard needs no SLMP poll.
     header(out, "slmp_cpu_state", "gauge", "Operating state as SD203 shows it: 0 RUN, 2 STOP, 3 PAUSE.");

@@ -13,6 +13,8 @@
 
 namespace slmp::devicemodel {
 
+class DriveSet;   // file drives (devicemodel/drives.hpp), kept out of this widely included header
+
 // An intelligent function module's buffer memory, reached as U(io)\G(n) by the
 // 008x device commands and as bytes by Extend Unit 0601/1601.
 struct Module {
@@ -56,6 +58,12 @@ public:
     Runtime& runtime() { return runtime_; }
     const Runtime& runtime() const { return runtime_; }
 
+    // The CPU's file drives (1810-182A): the family's drives in memory until
+    // the configuration attaches folders (config::attach_drives).
+    DriveSet& drives() { return *drives_; }
+    const DriveSet& drives() const { return *drives_; }
+    void set_drives(std::shared_ptr<DriveSet> drives) { drives_ = std::move(drives); }
+
 private:
     void publish_device_sizes();
 
@@ -66,6 +74,7 @@ private:
     std::map<std::uint16_t, std::unique_ptr<DeviceMemory>> networks_;
     LabelTable labels_;
     Runtime runtime_{profile_.family};
+    std::shared_ptr<DriveSet> drives_;
 };
 
 }  // namespace slmp::devicemodel

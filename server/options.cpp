@@ -1,5 +1,7 @@
 #include "server/options.hpp"
 
+#include "config/drive_config.hpp"
+
 #include <iostream>
 #include <vector>
 
@@ -58,6 +60,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("no-http", "serve no HTTP API, metrics or web monitor")
         ("switch", po::value<std::string>(), "the CPU's RUN/STOP switch: RUN (default) or STOP")
         ("state-dir", po::value<std::string>(), "keep device memory here across restarts (see docs/cpu-runtime.md)")
+        ("drive", po::value<std::vector<std::string>>(), "N=DIR: serve file drive N from the folder DIR; repeatable (docs/files.md)")
         ("scenario", po::value<std::vector<std::string>>(), "run a scenario file (values that move, logic, faults, replay); repeatable (docs/scenarios.md)")
         ("labels", po::value<std::vector<std::string>>(), "declare global labels from this JSON or GX Works3 CSV file; repeatable (docs/labels.md)")
         ("record", po::value<std::string>(), "record every request and response to this JSON-lines file (docs/scenarios.md)")
@@ -170,6 +173,8 @@ CommandLine parse_command_line(int argc, char** argv) {
     }
     if (vm.count("switch")) c.cpu.runtime.run_switch = config::parse_run_switch(vm["switch"].as<std::string>(), "--switch");
     if (vm.count("state-dir")) c.persistence.state_dir = vm["state-dir"].as<std::string>();
+    if (vm.count("drive"))
+        for (const auto& text : vm["drive"].as<std::vector<std::string>>()) c.drives.push_back(config::parse_drive_option(text));
     if (vm.count("scenario")) {
         auto files = vm["scenario"].as<std::vector<std::string>>();
         c.scenarios.insert(c.scenarios.end(), files.begin(), files.end());

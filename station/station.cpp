@@ -23,6 +23,7 @@ Station::Station(boost::asio::io_context& io, const config::ServerConfig& config
     pending_scenarios_ = load_scenarios();   // their initial state joins config_ first
     config::apply_initial_values(cpu_, config_);
     config::attach_hardware(cpu_, config_);
+    config::attach_drives(cpu_, config_);
     config::declare_labels(cpu_, config_.labels);
     for (const auto& cpu : config_.cpus) {
         auto profile = config::resolve_profile(cpu);

@@ -65,6 +65,21 @@ EndCode clear_error(CommandContext& ctx);
 EndCode remote_run_1e(CommandContext& ctx);    // 1E 13
 EndCode remote_stop_1e(CommandContext& ctx);   // 1E 14
 
+// files.cpp — File control 1810 Read Directory, 1811 Search, 1820 New,
+// 1822 Delete, 1824 Copy, 1825 Change State, 1826 Change Date, 1827 Open,
+// 1828 Read, 1829 Write, 182A Close (devicemodel/drives.hpp, docs/files.md).
+EndCode file_list(CommandContext& ctx);
+EndCode file_search(CommandContext& ctx);
+EndCode file_new(CommandContext& ctx);
+EndCode file_delete(CommandContext& ctx);
+EndCode file_copy(CommandContext& ctx);
+EndCode file_state(CommandContext& ctx);
+EndCode file_date(CommandContext& ctx);
+EndCode file_open(CommandContext& ctx);
+EndCode file_read(CommandContext& ctx);
+EndCode file_write(CommandContext& ctx);
+EndCode file_close(CommandContext& ctx);
+
 // password.cpp — Remote Password Unlock 1630 / Lock 1631.
 EndCode password_unlock(CommandContext& ctx);
 EndCode password_lock(CommandContext& ctx);

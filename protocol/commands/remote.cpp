@@ -11,6 +11,7 @@
 // rules' end codes where the manuals are silent are chosen (docs/cpu-runtime.md):
 // held by another client 4015, not in STOP 4013 (real, for latch clear),
 // reset disabled 4014, a stop error pending C05F.
+#include "devicemodel/drives.hpp"
 #include "protocol/commands/handlers.hpp"
 
 namespace slmp::protocol::commands {
@@ -73,6 +74,7 @@ EndCode remote_reset(CommandContext& ctx) {
     if (!fixed_word_only(ctx.in)) return ctx.in.ok() ? EndCode::BadRequestContent : ctx.in.error();
     auto code = end_code_for(ctx.cpu.runtime().reset(ctx.cpu.memory()));
     ctx.restarted = code == EndCode::Ok;
+    if (ctx.restarted) ctx.cpu.drives().clear_locks();   // slmp-files.md §4.8: a CPU reset releases every lock
     return code;
 }
 

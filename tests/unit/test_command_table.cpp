@@ -55,14 +55,18 @@ TEST_CASE("command table: device commands have a decoder; the write ones are fla
     // Everything else that writes memory: buffer memory, and the remote
     // operations that clear devices (RUN with a clear mode, Latch Clear, RESET).
     CHECK(commands_where(&CommandSpec::writes) ==
-          std::set<std::uint16_t>{0x1001, 0x1005, 0x1006, 0x1401, 0x1402, 0x1406, 0x141A, 0x141B, 0x1601, 0x1613});
+          std::set<std::uint16_t>{0x1001, 0x1005, 0x1006, 0x1401, 0x1402, 0x1406, 0x141A, 0x141B, 0x1601, 0x1613,
+                                  // the file commands system protect blocks (slmp-files.md §5)
+                                  0x1820, 0x1822, 0x1824, 0x1825, 0x1826, 0x1829});
 }
 
 TEST_CASE("command table: the device form and the extended layout follow the subcommand", "[table]") {
     for (const auto& row : all_commands()) {
         INFO(std::hex << row.command << "/" << row.subcommand);
         if (!row.device_command()) {
-            CHECK(row.subcommand == 0x0000);
+            // The file commands' dialects (slmp-files.md §2.1): 0000 Q/L, 0004 L, 0040 iQ-R.
+            const bool file_command = row.command >= 0x1810 && row.command <= 0x182A;
+            CHECK((row.subcommand == 0x0000 || (file_command && (row.subcommand == 0x0004 || row.subcommand == 0x0040))));
             continue;
         }
         const auto form = row.subcommand & 0x0003;
@@ -83,6 +87,9 @@ TEST_CASE("command table: which port families refuse which commands (hardware-be
     CHECK(commands_refused_by(Family::L) == built_in_q_l);
     std::set<std::uint16_t> fx5{0x0613, 0x0801, 0x0802, 0x1613};
     fx5.insert(labels.begin(), labels.end());
+    // File control 1810-182A: not in the FX5 port's command list (inferred; the
+    // FX5 reaches its SD card by FTP; docs/files.md).
+    fx5.insert({0x1810, 0x1811, 0x1820, 0x1822, 0x1824, 0x1825, 0x1826, 0x1827, 0x1828, 0x1829, 0x182A});
     CHECK(commands_refused_by(Family::IQF) == fx5);
 }
 

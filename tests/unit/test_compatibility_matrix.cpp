@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <sstream>
 
+#include <optional>
+
 #include "config/builtin_profiles.hpp"
+#include "devicemodel/drives.hpp"
 #include "protocol/command_table.hpp"
 #include "support/device_commands.hpp"
 #include "support/generated_section.hpp"
@@ -32,9 +35,8 @@ struct Row {
 
 // Commands of the spec the simulator does not implement yet: they must be
 // refused with the profile's "not supported" code, never answered 0000.
-const Row kNotImplemented[] = {
-    {0x1810, 0x0000, "Read Directory/File"},    {0x1827, 0x0000, "Open File"},
-};
+// (None left since the file commands 1810-182A.)
+const std::vector<Row> kNotImplemented = {};
 
 // A valid request for `row`, and what must go before it on the same connection.
 struct Probe {
@@ -51,7 +53,54 @@ Payload password_req(std::uint16_t command, const std::string& pw) {
     return word(command) + word(0x0000) + word(static_cast<std::uint16_t>(pw.size())) + Payload{hex(text(pw)), pw};
 }
 
+// File commands (slmp-files.md §6) against "A.CSV" on drive 2, which cpu_for
+// puts on every family with drives: names, passwords and fixed fields in the
+// row's dialect (0040: UTF-16 and a length-prefixed password).
+Payload file_name(std::uint16_t sub, const std::string& name) {
+    if (sub != 0x0040) return word(static_cast<std::uint16_t>(name.size())) + Payload{hex(text(name)), name};
+    Payload p = word(static_cast<std::uint16_t>(name.size()));
+    for (char c : name) p = p + word(static_cast<std::uint16_t>(c));
+    return p;
+}
+Payload file_password(std::uint16_t sub) {
+    if (sub == 0x0040) return word(0);
+    std::string spaces(sub == 0x0004 ? 32 : 4, ' ');
+    return Payload{hex(text(spaces)), spaces};
+}
+Payload zero_slot(std::uint16_t sub) { return sub == 0x0040 ? Payload{"00 00 00 00", "0000"} : file_password(0); }
+Payload dword(std::uint32_t v) { return Payload{le(v, 4), hexn(v, 8)}; }
+
+std::optional<Probe> file_probe(const Row& row) {
+    const auto sub = row.subcommand;
+    const Payload head = word(row.command) + word(sub);
+    const Payload open_read = word(0x1827) + word(0x0040) + word(0) + word(0x0000) + word(2) + file_name(0x0040, "A.CSV");
+    const Payload open_read_q = word(0x1827) + word(0x0000) + file_password(0) + word(0x0000) + word(2) + file_name(0, "A.CSV");
+    const Payload open_write = word(0x1827) + word(0x0040) + word(0) + word(0x0100) + word(2) + file_name(0x0040, "A.CSV");
+    const Payload open_write_q = word(0x1827) + word(0x0000) + file_password(0) + word(0x0100) + word(2) + file_name(0, "A.CSV");
+    switch (row.command) {
+        case 0x1810:
+            return Probe{{}, head + Payload{"30 30 30 30", "0000"} + word(2) +
+                                 (sub == 0x0040 ? dword(1) + word(1) + word(0) : word(1) + word(1) + word(0))};
+        case 0x1811: return Probe{{}, head + zero_slot(sub) + word(2) + word(0) + file_name(sub, "A.CSV")};
+        case 0x1820: return Probe{{}, head + zero_slot(sub) + word(2) + dword(4) + file_name(sub, "N.CSV")};
+        case 0x1822: return Probe{{}, head + file_password(sub) + word(2) + file_name(sub, "A.CSV")};
+        case 0x1824:
+            return Probe{{}, head + Payload{"00 00 00 00 00 00 00 00", "0000000000000000"} + file_password(sub) + word(2) +
+                                 file_name(sub, "B.CSV") + file_password(sub) + word(2) + file_name(sub, "A.CSV")};
+        case 0x1825: return Probe{{}, head + file_password(sub) + word(2) + word(0x0020) + file_name(sub, "A.CSV")};
+        case 0x1826:
+            return Probe{{}, head + Payload{"00 00 00 00", "0000"} + word(2) + word(0x3C81) + word(0xA65D) + file_name(sub, "A.CSV")};
+        case 0x1827: return Probe{{}, head + file_password(sub) + word(0x0000) + word(2) + file_name(sub, "A.CSV")};
+        // 1828/1829/182A after an open in whichever dialect the family speaks (one of them is refused).
+        case 0x1828: return Probe{{open_read, open_read_q}, head + word(0) + dword(0) + word(2)};
+        case 0x1829: return Probe{{open_write, open_write_q}, head + word(0) + dword(0) + word(2) + Payload{"01 02", "0102"}};
+        case 0x182A: return Probe{{open_read, open_read_q}, head + word(0) + word(0)};
+        default: return std::nullopt;
+    }
+}
+
 Probe probe_for(const Row& row, const devicemodel::CpuProfile& profile) {
+    if (auto file = file_probe(row)) return *file;
     const auto sub = row.subcommand;
     const Form form = (sub & 0x0002) ? Form::IQR : Form::Q;
     const bool extended = (sub & 0x0080) != 0;
@@ -103,6 +152,9 @@ devicemodel::Cpu cpu_for(const std::string& profile_name) {
     labels.labels.back().name = "W";
     labels.labels.back().type = "INT";
     config::declare_labels(cpu, labels);
+    if (cpu.drives().exists(2)) {   // "A.CSV" for the file commands
+        REQUIRE(cpu.drives().create({2, "A.CSV"}, devicemodel::NameForm::Long, 4) == devicemodel::FileFault::None);
+    }
     devicemodel::RuntimeConfig c;
     c.remote_reset_enabled = true;
     if (cpu.profile().password_max_length) c.password = password_for(cpu.profile());

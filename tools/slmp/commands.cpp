@@ -7,7 +7,7 @@ namespace slmp::cli {
 namespace {
 
 // clang-format off
-const std::array<CommandSpec, 14> kCommands = {{
+const std::array<CommandSpec, 15> kCommands = {{
     {"read", "DEVICE [POINTS]", "0401 Device Read: POINTS words (default 1), or bits with --bits", {"bits"}, run_read},
     {"write", "DEVICE VALUE...", "1401 Device Write: words (-32768..65535, 0x..), or 0/1 with --bits", {"bits"}, run_write},
     {"random", "read|write ITEM...", "0403 Read Random / 1402 Write Random: read D0 M100 --dword D200; "
@@ -16,6 +16,8 @@ const std::array<CommandSpec, 14> kCommands = {{
                            {"interval", "count"}, run_monitor},
     {"label", "read|write NAME...", "041C/041A label read: LabelW DDD[0]:20; 141B/141A label write: LabelW 5, "
                                     "DDD[0] 1 2 3 (docs/labels.md)", {}, run_label},
+    {"file", "ls|get|put|rm ...", "file drives (1810-182A): ls [4:[DIR]], get 4:A.CSV [LOCAL], put LOCAL 4:A.CSV, "
+                                  "rm 4:A.CSV (docs/files.md)", {}, run_file},
     {"run", "", "1001 Remote RUN (--force: mode 0003; --clear none|nonlatch|all)", {"force", "clear"}, run_remote_run},
     {"stop", "", "1002 Remote STOP", {}, run_remote_stop},
     {"pause", "", "1003 Remote PAUSE (--force: mode 0003)", {"force"}, run_remote_pause},

@@ -42,6 +42,7 @@ void run_write(Invocation& in);
 void run_random(Invocation& in);
 void run_monitor(Invocation& in);
 void run_label(Invocation& in);
+void run_file(Invocation& in);
 void run_remote_run(Invocation& in);
 void run_remote_stop(Invocation& in);
 void run_remote_pause(Invocation& in);
