@@ -139,7 +139,7 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
     JsonAt root(json, source);
     root.only_keys({"profile", "bind", "ports", "max_request_bytes", "device_sizes", "devices", "log_level", "modules",
                     "networks", "cpus", "http", "cpu", "state_dir", "snapshot_interval_s", "restore",
-                    "clock_speed", "labels", "structures"});
+                    "clock_speed", "labels", "structures", "timing"});
     ServerConfig c;
     if (root.has("profile")) c.profile = root["profile"].string();
     if (root.has("bind")) c.bind = root["bind"].string();
@@ -161,6 +161,7 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
             root["log_level"].fail("unknown log level '" + c.log_level + "'", "use trace, debug, info, warn, error or off");
     }
     if (root.has("http")) c.http = http_config(root["http"]);
+    if (root.has("timing")) c.timing = parse_timing_config(root["timing"]);
     parse_hardware(root, c);
     parse_cpu_runtime(root, c);
     parse_labels(root, std::filesystem::path(source).parent_path(), c.labels);

@@ -32,6 +32,7 @@ public:
 
     void refuse_connections(bool refusing) override;
     void restart_sessions() override;
+    std::vector<station::PushTarget> push_targets() override;
 
 private:
     std::vector<std::unique_ptr<TcpListener>> tcp_;
