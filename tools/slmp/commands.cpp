@@ -7,7 +7,7 @@ namespace slmp::cli {
 namespace {
 
 // clang-format off
-const std::array<CommandSpec, 14> kCommands = {{
+const std::array<CommandSpec, 15> kCommands = {{
     {"read", "DEVICE [POINTS]", "0401 Device Read: POINTS words (default 1), or bits with --bits", {"bits"}, run_read},
     {"write", "DEVICE VALUE...", "1401 Device Write: words (-32768..65535, 0x..), or 0/1 with --bits", {"bits"}, run_write},
     {"random", "read|write ITEM...", "0403 Read Random / 1402 Write Random: read D0 M100 --dword D200; "
