@@ -82,8 +82,8 @@ TEST_CASE("ondemand: POST /api/ondemand pushes the words to a TCP client, in its
         CHECK(a.recv_some(std::chrono::milliseconds(0)).status == RecvStatus::Timeout);
     }
     SECTION("bad input: the error names the problem") {
-        CHECK(post(port, "/api/ondemand", R"({"data": "D100-C5"})").error() ==
-              "\"data\": the range mixes D and C; write a device range such as \"D100-D109\" (at most 960 words)");
+        CHECK(post(port, "/api/ondemand", R"({"data": "D100-W5"})").error() ==
+              "\"data\": the range mixes D and W; write a device range such as \"D100-D109\" (at most 960 words)");
         CHECK(post(port, "/api/ondemand", R"({"data": "D0-D999"})").error() ==
               "\"data\": more than 960 words (the Ondemand limit of 1920 bytes); write a device range such as \"D100-D109\" (at most 960 words)");
         CHECK(post(port, "/api/ondemand", R"({"data": "D100", "to": "everyone"})").error() ==
@@ -123,7 +123,8 @@ TEST_CASE("ondemand: a scenario step pushes at its time; the recording and the e
     EventReader events(port, "?types=request");
     auto c = TcpClient::open(sim.tcp_port());
     for (int i = 0; i < 1000 && http_get(port, "/api/connections").json()["connections"].empty(); ++i) {}
-    REQUIRE(post(port, "/api/clock/step", R"({"ms": 100})").status == 200);
+    // The scenario's clock starts at the first scan: 200 ms of steps pass its 100 ms.
+    REQUIRE(post(port, "/api/clock/step", R"({"ms": 200})").status == 200);
     CHECK(show(next_frame(c)) == show(kPush3EBinary));
     std::optional<ServerEvent> event;
     while ((event = events.next()) && event->type != "ondemand") {}

@@ -154,7 +154,7 @@ TEST_CASE("model: the monitoring timer runs out first: CF71 at the timer's time,
     options.monitoring_timer = 0;
     REQUIRE(c.send(client::write_words(options, addr("D0"), values)));
     await_waiting(port, 1);
-    step(port, R"({"ms": 600})");
+    step(port, R"({"ms": 601})");   // 600 + Kdt 0.003 x 1 word
     CHECK(show(response_of(c)) == show(expected_response(kBin, {})));
     CHECK(http_get(port, "/api/devices/D0").json()["values"] == json{5});
 }

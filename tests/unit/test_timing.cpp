@@ -41,7 +41,7 @@ TEST_CASE("ondemand frame: 3E/4E response shape, end code 0000, 2101 0000, the w
     CHECK(protocol::encode_ondemand(protocol::FrameKind::E3, protocol::Codec::Ascii, words) ==
           text("D00000FF03FF00001400002101000012345678"));
     CHECK(protocol::encode_ondemand(protocol::FrameKind::E4, protocol::Codec::Ascii, words) ==
-          text("D400000000000000FF03FF00001400002101000012345678"));
+          text("D4000000000000FF03FF00001400002101000012345678"));
     // 1E and the station-number-extended frame have no Ondemand: the 3E shape.
     CHECK(protocol::encode_ondemand(protocol::FrameKind::E1, protocol::Codec::Binary, words) ==
           protocol::encode_ondemand(protocol::FrameKind::E3, protocol::Codec::Binary, words));
@@ -118,7 +118,7 @@ TEST_CASE("timing configuration: mode, constants over the profile's, errors name
     CHECK_THROWS_WITH(config::parse_server_config(R"({"timing": {"jitter": 2}})", "t.json"), Catch::Contains("/timing/jitter"));
     CHECK_THROWS_WITH(config::parse_server_config(R"({"timing": {"ke": 2}})", "t.json"), Catch::Contains("ke"));
     // A profile's own constants.
-    auto p = config::parse_profile(R"({"extends": "R08CPU", "name": "SLOW", "timing": {"ke_ms": 20, "scan_wait": false}})", "slow.json");
+    auto p = config::parse_profile(R"({"extends": "R08CPU", "name": "SLOW", "description": "a slow CPU", "timing": {"ke_ms": 20, "scan_wait": false}})", "slow.json");
     CHECK(p.timing.ke_binary_ms == 20);
     CHECK(p.timing.kdt_binary_ms == 0.003);
     CHECK_FALSE(p.timing.scan_wait);
