@@ -147,3 +147,27 @@ TEST_CASE("ondemand: a scenario step pushes at its time; the recording and the e
     CHECK(pushes[0]["response"] == "d00000ffff03000a000000012100003412" "7856");
     CHECK(pushes[0]["transport"] == "tcp");
 }
+
+TEST_CASE("slmp ondemand --wait prints the pushed words", "[ondemand][cli]") {
+    SimProcess sim;
+    const auto port = sim.http_port();
+    REQUIRE(http_put(port, "/api/devices/D100", R"({"values": [4660, 22136]})").status == 200);
+    TempDir dir;
+    const std::vector<std::string> args = {"--port", std::to_string(sim.tcp_port()), "--timeout", "20s", "--json", "ondemand", "--wait"};
+    const auto pid = detail::spawn(args, dir.path() / "out", dir.path() / "err", SLMP_CLI_BINARY);
+    // The CLI is connected once the station lists its connection.
+    json list;
+    for (int i = 0; i < 2000; ++i) {
+        list = http_get(port, "/api/connections").json()["connections"];
+        if (!list.empty()) break;
+    }
+    REQUIRE(list.size() == 1);
+    REQUIRE(post(port, "/api/ondemand", R"({"data": "D100-D101"})").json()["sent"].size() == 1);
+    auto status = detail::wait_for(pid, std::chrono::seconds(20));
+    REQUIRE(status);
+    CHECK(WIFEXITED(*status));
+    CHECK(WEXITSTATUS(*status) == 0);
+    auto out = read_text(dir.path() / "out");
+    INFO(out << read_text(dir.path() / "err"));
+    CHECK(json::parse(out) == json{{"command", "2101"}, {"push", 1}, {"words", {4660, 22136}}});
+}
