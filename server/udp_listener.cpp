@@ -13,6 +13,8 @@ namespace asio = boost::asio;
 using asio::ip::udp;
 using protocol::Outcome;
 
+constexpr std::size_t kMaxPushPeers = 256;   // UDP peers an Ondemand push reaches (docs/timing.md)
+
 UdpListener::UdpListener(asio::io_context& io, station::Station& station, const config::PortConfig& port,
                          const asio::ip::address& bind)
     : station_(station),
@@ -49,7 +51,9 @@ asio::awaitable<void> UdpListener::serve() {
         }
         if (outcome.consumed < n)
             spdlog::debug("{} {} byte(s) after the request frame ignored", peer.text(), n - outcome.consumed);
-        if (outcome.command != 0) {
+        // Remember who spoke, for Ondemand pushes; bounded, so a flood of
+        // source ports cannot grow it without end (later peers are not pushed to).
+        if (outcome.command != 0 && (peers_.size() < kMaxPushPeers || peers_.count(sender))) {
             auto [kind, codec] = request_shape(input);
             peers_[sender] = {kind, codec};
         }
