@@ -18,6 +18,7 @@
 #include "protocol/frame.hpp"
 #include "protocol/peer.hpp"
 #include "protocol/port_profile.hpp"
+#include "config/timing_config.hpp"
 
 namespace slmp::config {
 
@@ -33,6 +34,7 @@ std::vector<std::string> builtin_profile_names();
 struct Profile {
     devicemodel::CpuProfile cpu;
     protocol::PortProfile port;
+    TimingModel timing;        // the response-time model's constants (docs/timing.md)
     std::string description;   // one line, for --list-profiles
 };
 // "iQ-R", "QnU", "L", "QJ71E71", "iQ-F": as profiles, logs and the API write it.
@@ -185,6 +187,7 @@ struct ServerConfig {
     std::string snapshot_file;             // --snapshot: start from a station snapshot saved to a file (docs/ci.md)
     LabelsConfig labels;                   // "labels", "structures", --labels files
     std::vector<DriveConfig> drives;       // "drives", --drive: file drives of CPU No.1 (docs/files.md)
+    TimingConfig timing;                   // "timing", --timing: when answers leave (docs/timing.md)
 };
 inline constexpr double kMinClockSpeed = 0.01, kMaxClockSpeed = 1000;
 inline constexpr const char* kClockSpeedFix = "use a factor from 0.01 to 1000 (default 1: real time)";

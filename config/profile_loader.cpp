@@ -86,7 +86,7 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
                     "unsupported_commands", "end_codes", "limits", "device_sizes", "start_only_range_check",
                     "read_only_devices", "size_registers", "zr_ascii_hex", "mixed_block_write",
                     "station_buffer_words", "remote_password_length", "online_change", "frame_1e",
-                    "station_extended_frame", "pipeline"});
+                    "station_extended_frame", "pipeline", "timing"});
     Profile profile;
     auto& p = profile.cpu;
     auto& port = profile.port;
@@ -107,6 +107,7 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
         port.pc_type_1e = static_cast<std::uint8_t>(code);
     }
     if (root.has("station_extended_frame")) port.station_extended_frame = root["station_extended_frame"].boolean();
+    if (root.has("timing")) profile.timing = parse_timing_model(root["timing"], profile.timing);
     if (root.has("pipeline")) {   // {"buffer": 32, "over_limit": "CEE0"}: 1 + buffer ÷ connections (spec §2.3)
         auto pipeline = root["pipeline"];
         pipeline.only_keys({"buffer", "over_limit"});

@@ -140,7 +140,7 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
     JsonAt root(json, source);
     root.only_keys({"profile", "bind", "ports", "max_request_bytes", "device_sizes", "devices", "log_level", "modules",
                     "networks", "cpus", "http", "cpu", "state_dir", "snapshot_interval_s", "restore",
-                    "clock_speed", "labels", "structures", "drives", "kind", "hostlink", "jw51cm"});   // the last three: parse_frontends_config
+                    "clock_speed", "labels", "structures", "drives", "timing", "kind", "hostlink", "jw51cm"});   // the last three: parse_frontends_config
     ServerConfig c;
     if (root.has("profile")) c.profile = root["profile"].string();
     if (root.has("bind")) c.bind = root["bind"].string();
@@ -162,6 +162,7 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
             root["log_level"].fail("unknown log level '" + c.log_level + "'", "use trace, debug, info, warn, error or off");
     }
     if (root.has("http")) c.http = http_config(root["http"]);
+    if (root.has("timing")) c.timing = parse_timing_config(root["timing"]);
     parse_hardware(root, c);
     parse_drives(root, c);
     parse_cpu_runtime(root, c);

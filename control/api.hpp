@@ -48,6 +48,7 @@ void add_fault_endpoints(Router& router, Api& api);        // /api/faults[/{name
 void add_recording_endpoints(Router& router, Api& api);    // /api/recording
 void add_connection_endpoints(Router& router, Api& api);   // /api/connections[/{id}]
 void add_info_endpoint(Router& router, Api& api);          // /api/info
+void add_ondemand_endpoint(Router& router, Api& api);      // /api/ondemand
 void add_state_endpoints(Router& router, Api& api);        // /api/state
 void add_event_endpoint(Router& router, Api& api);         // /api/events
 void add_metrics_endpoint(Router& router, Api& api);       // /metrics

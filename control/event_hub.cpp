@@ -4,6 +4,7 @@
 
 #include "control/activity_json.hpp"
 #include "control/timestamp.hpp"
+#include "scenarios/recording.hpp"
 
 namespace slmp::control {
 
@@ -141,6 +142,17 @@ void EventHub::flush_writes(std::string_view source, const protocol::Peer* peer,
 void EventHub::on_request(const station::RequestRecord& record) {
     if (wanted(kRequestEvents)) publish(kRequestEvents, "request", request_json(record));
     flush_writes("slmp", &record.peer, record.connection);
+}
+
+void EventHub::on_pushed(const station::PushRecord& p) {
+    if (!wanted(kRequestEvents)) return;
+    publish(kRequestEvents, "ondemand",
+            {{"connection", p.connection},
+             {"transport", station::to_string(p.peer.transport)},
+             {"peer", p.peer.endpoint()},
+             {"command", "2101"},
+             {"frame", scenarios::to_hex(p.frame)},
+             {"why", p.why}});
 }
 
 void EventHub::on_opened(const station::Connection& connection) {

@@ -69,6 +69,7 @@ public:
     void on_request_starting() override { flush_writes("internal"); }
     void on_request(const station::RequestRecord& record) override;
     void on_opened(const station::Connection& connection) override;
+    void on_pushed(const station::PushRecord& push) override;   // an "ondemand" event (request events)
     void on_closed(const station::Connection& connection, std::string_view why) override;
     void written(const devicemodel::DeviceSpec& spec, std::uint32_t first, std::uint32_t count) override;
     // Label-area words wake the waits; the event stream shows device runs only.

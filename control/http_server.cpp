@@ -65,6 +65,7 @@ HttpServer::HttpServer(asio::io_context& io, station::Station& station, const co
     add_recording_endpoints(router_, api_);
     add_connection_endpoints(router_, api_);
     add_info_endpoint(router_, api_);
+    add_ondemand_endpoint(router_, api_);
     add_state_endpoints(router_, api_);
     add_event_endpoint(router_, api_);
     add_metrics_endpoint(router_, api_);

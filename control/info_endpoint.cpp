@@ -5,12 +5,28 @@
 #include "control/api.hpp"
 #include "control/hex_text.hpp"
 #include "control/timestamp.hpp"
+#include "station/scan_loop.hpp"
 
 namespace slmp::control {
 
 using nlohmann::json;
 
 namespace {
+
+// The timing mode (docs/timing.md), its model's constants, and how many
+// answers wait for the clock now (what a test checks instead of sleeping).
+json timing(station::Station& station) {
+    const auto& m = station.timing_model();
+    auto* scan = station.scan_loop();
+    return {{"mode", config::to_string(station.timing_mode())},
+            {"ke_ms", m.ke_binary_ms},
+            {"ke_ascii_ms", m.ke_ascii_ms},
+            {"kdt_ms", m.kdt_binary_ms},
+            {"kdt_ascii_ms", m.kdt_ascii_ms},
+            {"scan_wait", m.scan_wait},
+            {"waiting", scan ? scan->waiting() : 0},
+            {"scans", scan ? scan->scans() : 0}};
+}
 
 Reply info(Api& api) {
     const auto& profile = api.station.cpu().profile();
@@ -39,6 +55,7 @@ Reply info(Api& api) {
                      {"family", config::family_name(profile.family)}}},
         {"device_sizes", std::move(sizes)},
         {"devices", std::move(devices)},
+        {"timing", timing(api.station)},
         {"ports", {{"bind", api.ports.bind}, {"tcp", api.ports.tcp}, {"udp", api.ports.udp}, {"http", api.ports.http}}},
     });
 }

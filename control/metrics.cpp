@@ -72,6 +72,14 @@ void Metrics::on_request(const station::RequestRecord& record) {
     ++latency_buckets_[bucket];
     latency_sum_ += seconds;
     ++latency_count_;
+    if (record.modelled) {
+        double modelled = std::chrono::duration<double>(*record.modelled).count();
+        std::size_t b = 0;
+        while (b < kBuckets.size() && modelled > kBuckets[b]) ++b;
+        ++modelled_buckets_[b];
+        modelled_sum_ += modelled;
+        ++modelled_count_;
+    }
 }
 
 void Metrics::on_opened(const station::Connection&) { ++accepted_; }
@@ -112,6 +120,18 @@ std::string Metrics::render() const {
     out += "slmp_request_duration_seconds_bucket{le=\"+Inf\"} " + std::to_string(cumulative) + "\n";
     out += "slmp_request_duration_seconds_sum " + number(latency_sum_) + "\n";
     out += "slmp_request_duration_seconds_count " + std::to_string(latency_count_) + "\n";
+
+    header(out, "slmp_modelled_response_seconds", "histogram",
+           "The timing model's response time of each request, in CPU time (timing mode \"model\"; docs/timing.md).");
+    cumulative = 0;
+    for (std::size_t i = 0; i < kBuckets.size(); ++i) {
+        cumulative += modelled_buckets_[i];
+        out += "slmp_modelled_response_seconds_bucket{le=\"" + number(kBuckets[i]) + "\"} " + std::to_string(cumulative) + "\n";
+    }
+    cumulative += modelled_buckets_.back();
+    out += "slmp_modelled_response_seconds_bucket{le=\"+Inf\"} " + std::to_string(cumulative) + "\n";
+    out += "slmp_modelled_response_seconds_sum " + number(modelled_sum_) + "\n";
+    out += "slmp_modelled_response_seconds_count " + std::to_string(modelled_count_) + "\n";
 
     header(out, "slmp_received_bytes_total", "counter", "Bytes of SLMP request frames received (including skipped garbage).");
     for (std::size_t i = 0; i < transports_.size(); ++i)

@@ -49,6 +49,10 @@ private:
     std::array<std::uint64_t, kBuckets.size() + 1> latency_buckets_{};   // not cumulative; last = +Inf
     double latency_sum_ = 0;
     std::uint64_t latency_count_ = 0;
+    // The "model" timing mode's response time of each request (docs/timing.md), the same buckets.
+    std::array<std::uint64_t, kBuckets.size() + 1> modelled_buckets_{};
+    double modelled_sum_ = 0;
+    std::uint64_t modelled_count_ = 0;
     std::uint64_t accepted_ = 0;
     std::uint64_t closed_ = 0;
 };

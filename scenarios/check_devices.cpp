@@ -50,6 +50,7 @@ void check_devices(const Scenario& s, const devicemodel::DeviceMemory& memory, c
                            c.fits(x.from, x.points, step.pointer + "/copy");
                            c.fits(x.to, x.points, step.pointer + "/to");
                        },
+                       [&](const OndemandAction& x) { c.fits(x.first, x.points, step.pointer + "/ondemand"); },
                        [&](const auto& x) { c.fits(x.device, step.pointer); },
                    },
                    step.action);
@@ -64,6 +65,7 @@ void check_devices(const Scenario& s, const devicemodel::DeviceMemory& memory, c
                            [&](const SetAction& a) { c.fits(a.values, pointer); },
                            [&](const IncrementAction& a) { c.fits(a.device, pointer); },
                            [&](const PulseAction& a) { c.fits(a.device, 1, pointer); },
+                           [&](const OndemandAction& a) { c.fits(a.first, a.points, pointer + "/ondemand"); },
                            [](const auto&) {},
                        },
                        t.actions[i]);

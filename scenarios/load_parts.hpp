@@ -41,6 +41,8 @@ std::vector<std::uint16_t> codes(const JsonAt& at);
 devicemodel::RunSwitch run_switch(const JsonAt& at);
 // {"code": "3100", "stop": true}
 devicemodel::CpuError cpu_error(const JsonAt& at);
+// {"data": "D100-D109", "to": "all"}: an Ondemand step or action.
+OndemandAction ondemand(const JsonAt& at);
 // "read" / "write"
 Access access(const JsonAt& at);
 

@@ -20,7 +20,8 @@ double positive_ms(const JsonAt& at) {
 
 // The one key that names the step's kind.
 std::string kind_of(const JsonAt& at) {
-    static constexpr std::string_view kinds[] = {"set", "increment", "ramp", "sine", "square", "random_walk", "copy"};
+    static constexpr std::string_view kinds[] = {"set", "increment", "ramp", "sine", "square", "random_walk", "copy",
+                                                 "ondemand"};
     std::string found;
     for (auto k : kinds) {
         if (!at.has(k)) continue;
@@ -28,7 +29,7 @@ std::string kind_of(const JsonAt& at) {
         found = k;
     }
     if (found.empty())
-        at.fail("the step does nothing", "give it one of \"set\", \"increment\", \"ramp\", \"sine\", \"square\", \"random_walk\", \"copy\"");
+        at.fail("the step does nothing", "give it one of \"set\", \"increment\", \"ramp\", \"sine\", \"square\", \"random_walk\", \"copy\", \"ondemand\"");
     return found;
 }
 
@@ -78,6 +79,9 @@ Step step(const JsonAt& at, double previous_end) {
         if (at.has("every_ms")) w.every_ms = positive_ms(at["every_ms"]);
         s.action = w;
         s.duration_ms = lasting();
+    } else if (kind == "ondemand") {
+        at.only_keys({"ondemand", "at_ms", "after_ms"});
+        s.action = ondemand(at["ondemand"]);
     } else {   // copy
         at.only_keys({"copy", "to", "points", "at_ms", "after_ms"});
         CopyStep c{address(at["copy"]), address(at["to"]), 1};

@@ -86,7 +86,8 @@ Condition condition(const JsonAt& at, const JsonAt& owner) {
 Action action(const JsonAt& at) {
     at.expect_object();
     static constexpr std::string_view kinds[] = {"set", "increment", "pulse", "switch", "error", "clear_error",
-                                                 "start_fault", "stop_fault", "power_cycle", "refuse_connections", "log"};
+                                                 "start_fault", "stop_fault", "power_cycle", "refuse_connections", "log",
+                                                 "ondemand"};
     std::string key;
     for (auto k : kinds)
         if (at.has(k)) {
@@ -96,7 +97,7 @@ Action action(const JsonAt& at) {
     if (key.empty())
         at.fail("no action named",
                 "use one of set, increment, pulse, switch, error, clear_error, start_fault, stop_fault, power_cycle, "
-                "refuse_connections, log");
+                "refuse_connections, log, ondemand");
     auto only = [&](std::initializer_list<std::string_view> keys) { at.only_keys(keys); };
     if (key == "set") {
         only({"set"});
@@ -144,6 +145,10 @@ Action action(const JsonAt& at) {
         auto r = at["refuse_connections"];
         r.only_keys({"for_ms"});
         return RefuseAction{millis(r["for_ms"])};
+    }
+    if (key == "ondemand") {
+        only({"ondemand"});
+        return ondemand(at["ondemand"]);
     }
     only({"log"});
     return LogAction{at["log"].string()};

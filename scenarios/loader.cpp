@@ -105,6 +105,22 @@ std::vector<DeviceRange> ranges(const JsonAt& at) {
     return list;
 }
 
+OndemandAction ondemand(const JsonAt& at) {
+    at.only_keys({"data", "to"});
+    std::string to = "all";
+    if (at.has("to")) {
+        const auto t = at["to"];
+        if (t.json().is_number_unsigned()) to = std::to_string(t.json().get<std::uint64_t>());
+        else to = t.string();
+    }
+    std::string error;
+    auto action = parse_ondemand(at["data"].string(), to, &error);
+    if (!action) at["data"].fail(error, "write a device range such as \"D100-D109\" (at most 960 words)");
+    if (to != "all" && to != "tcp" && to != "udp" && to.find_first_not_of("0123456789") != std::string::npos)
+        at["to"].fail("unknown target '" + to + "'", "use \"all\", \"tcp\", \"udp\" or a TCP connection id");
+    return *action;
+}
+
 std::vector<std::uint16_t> codes(const JsonAt& at) {
     std::vector<std::uint16_t> list;
     if (!at.json().is_array()) return {at.hex_code()};
@@ -137,6 +153,29 @@ Access access(const JsonAt& at) {
 }
 
 }  // namespace load
+
+std::optional<OndemandAction> parse_ondemand(std::string_view data, std::string to, std::string* error) {
+    auto dash = data.find('-');
+    auto first = devicemodel::parse_address(data.substr(0, dash), error);
+    if (!first) return std::nullopt;
+    auto last = dash == std::string_view::npos ? first : devicemodel::parse_address(data.substr(dash + 1), error);
+    if (!last) return std::nullopt;
+    if (first->spec->area != last->spec->area) {
+        *error = "the range mixes " + std::string(first->spec->symbol) + " and " + std::string(last->spec->symbol);
+        return std::nullopt;
+    }
+    if (last->number < first->number) {
+        *error = "the range ends before it starts";
+        return std::nullopt;
+    }
+    const std::uint32_t points = last->number - first->number + 1;
+    const std::uint64_t words = first->spec->unit == devicemodel::Unit::Bit ? (points + 15) / 16 : points;
+    if (words > 960) {
+        *error = "more than 960 words (the Ondemand limit of 1920 bytes)";
+        return std::nullopt;
+    }
+    return OndemandAction{*first, points, std::move(to)};
+}
 
 namespace {
 

@@ -145,7 +145,7 @@ void PcapWriter::exchange(TimePoint at, const RecordedLink& link, std::span<cons
                           const std::string&) {
     auto ends = endpoints(link);
     if (link.transport == Transport::Udp) {
-        udp(at, ends, true, request);
+        if (!request.empty()) udp(at, ends, true, request);   // an Ondemand push has none
         if (response) udp(at, ends, false, *response);
         return;
     }

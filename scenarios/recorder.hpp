@@ -34,6 +34,11 @@ public:
                           const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults,
                           const std::string& named) = 0;
     virtual void closed(TimePoint at, const RecordedLink& link, const std::string& why) = 0;
+    // An Ondemand push the station sent unasked (docs/timing.md): by default a
+    // response without a request, marked "ondemand".
+    virtual void pushed(TimePoint at, const RecordedLink& link, const std::vector<std::uint8_t>& frame) {
+        exchange(at, link, {}, &frame, {"ondemand"});
+    }
 };
 
 }  // namespace slmp::scenarios

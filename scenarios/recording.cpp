@@ -92,6 +92,12 @@ void RecordingWriter::exchange(TimePoint at, const RecordedLink& link, std::span
     line(e.dump());
 }
 
+void RecordingWriter::pushed(TimePoint at, const RecordedLink& link, const std::vector<std::uint8_t>& frame) {
+    auto e = event(ms(at), link, "ondemand");
+    e["response"] = to_hex(frame);
+    line(e.dump());
+}
+
 void RecordingWriter::closed(TimePoint at, const RecordedLink& link, const std::string& why) {
     auto e = event(ms(at), link, "close");
     e["why"] = why;

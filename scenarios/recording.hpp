@@ -50,6 +50,8 @@ public:
     RecordingWriter(const std::filesystem::path& file, const std::string& profile, TimePoint start);
 
     void opened(TimePoint at, const RecordedLink& link) override;
+    // {"event":"ondemand","response":"d000..."}: replay skips it (no request to match).
+    void pushed(TimePoint at, const RecordedLink& link, const std::vector<std::uint8_t>& frame) override;
     void exchange(TimePoint at, const RecordedLink& link, std::span<const std::uint8_t> request,
                   const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults,
                   const std::string& named) override;

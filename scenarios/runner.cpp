@@ -32,7 +32,7 @@ ScenarioRunner::ScenarioRunner(std::vector<Scenario> scenarios, devicemodel::Cpu
     for (auto& s : scenarios_) {
         bind_labels(s, cpu_.labels());
         check_devices(s, cpu_.memory(), cpu_.profile().name);
-        timelines_.push_back(std::make_unique<TimelineRunner>(s.timeline, s.seed));
+        timelines_.push_back(std::make_unique<TimelineRunner>(s.timeline, s.seed, station_));
         logic_.push_back(std::make_unique<LogicRunner>(s.logic));
         for (const auto& t : s.triggers) triggers_.add(t);
         for (std::size_t i = 0; i < s.faults.size(); ++i) faults_.add(s.faults[i], s.source, Rng::stream(s.seed, i), s.name);
@@ -204,6 +204,9 @@ void ScenarioRunner::run(const Trigger& trigger) {
                            info("fault '" + a.fault + "' " + (a.enable ? "started" : "stopped"));
                        },
                        [&](const PowerCycleAction& a) { power_cycle(a.off_ms, "trigger " + name); },
+                       [&](const OndemandAction& a) {
+                           if (station_) station_->ondemand(a, "trigger " + name);
+                       },
                        [&](const RefuseAction& a) { refuse(a.for_ms, "trigger " + name); },
                        [&](const LogAction& a) { info(a.text); },
                    },

@@ -35,6 +35,9 @@ public:
     virtual void power_on() = 0;
     // New TCP connections are refused while `refuse` is true.
     virtual void refuse_connections(bool refuse) = 0;
+    // Ondemand 2101 to the clients the action names (`why`: the step or trigger, for logs).
+    // (Stations without clients, as in tests, ignore it.)
+    virtual void ondemand(const OndemandAction& /*action*/, const std::string& /*why*/) {}
 
 protected:
     ~Station() = default;

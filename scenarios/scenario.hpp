@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -71,8 +72,17 @@ struct SineStep { DeviceRef device; double center = 0, amplitude = 0, period_ms 
 struct SquareStep { DeviceRef device; double low = 0, high = 1, period_ms = 1000, duty = 0.5; };
 struct RandomWalkStep { DeviceRef device; double start = 0, min = 0, max = 0, step = 1, every_ms = 100; };
 struct CopyStep { devicemodel::DeviceAddress from, to; std::uint32_t points = 1; };
+// Ondemand 2101 (docs/timing.md): the CPU sends these devices' words to the
+// clients `to` names: "all", "tcp", "udp" or a TCP connection id ("3").
+// A timeline step and a trigger action.
+struct OndemandAction {
+    devicemodel::DeviceAddress first;
+    std::uint32_t points = 1;   // devices (bit devices: 16 to a word)
+    std::string to = "all";
+};
 
-using StepAction = std::variant<SetStep, IncrementStep, RampStep, SineStep, SquareStep, RandomWalkStep, CopyStep>;
+using StepAction = std::variant<SetStep, IncrementStep, RampStep, SineStep, SquareStep, RandomWalkStep, CopyStep,
+                                OndemandAction>;
 
 struct Step {
     StepAction action;
@@ -176,7 +186,11 @@ struct RefuseAction { double for_ms = 1000; };
 struct LogAction { std::string text; };
 
 using Action = std::variant<SetAction, IncrementAction, PulseAction, SwitchAction, ErrorAction, ClearErrorAction,
-                            FaultSwitchAction, PowerCycleAction, RefuseAction, LogAction>;
+                            FaultSwitchAction, PowerCycleAction, RefuseAction, LogAction, OndemandAction>;
+
+// "D100-D109" (or one device "D100") and a target, as an Ondemand's data;
+// nullopt with `error` set when the text names no device range.
+std::optional<OndemandAction> parse_ondemand(std::string_view data, std::string to, std::string* error);
 
 struct Trigger {
     std::string id;

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "scenarios/device_values.hpp"
+#include "scenarios/runner.hpp"
 
 namespace slmp::scenarios {
 namespace {
@@ -34,7 +35,8 @@ void apply_values(devicemodel::DeviceMemory& memory, const std::vector<config::I
     for (const auto& l : labels) write_number(memory, l.target, l.value);
 }
 
-TimelineRunner::TimelineRunner(const Timeline& timeline, std::uint64_t seed) : timeline_(timeline) {
+TimelineRunner::TimelineRunner(const Timeline& timeline, std::uint64_t seed, Station* station)
+    : timeline_(timeline), station_(station) {
     for (std::size_t i = 0; i < timeline.steps.size(); ++i) walks_.push_back(Walk{Rng(Rng::stream(seed, 1000 + i))});
 }
 
@@ -88,6 +90,9 @@ void TimelineRunner::instant(devicemodel::DeviceMemory& memory, const Step& step
                    [&](const SetStep& s) { apply_values(memory, s.values, s.labels); },
                    [&](const IncrementStep& s) { write_number(memory, s.device, read_number(memory, s.device) + s.by); },
                    [&](const CopyStep& s) { copy_devices(memory, s); },
+                   [&](const OndemandAction& s) {
+                       if (station_) station_->ondemand(s, "timeline " + step.pointer);
+                   },
                    [](const auto&) {},
                },
                step.action);

@@ -21,9 +21,12 @@ namespace slmp::scenarios {
 void apply_values(devicemodel::DeviceMemory& memory, const std::vector<config::InitialValue>& values,
                   const std::vector<LabelValue>& labels = {});
 
+class Station;   // runner.hpp
+
 class TimelineRunner {
 public:
-    TimelineRunner(const Timeline& timeline, std::uint64_t seed);
+    // `station` serves Ondemand steps (null: they do nothing).
+    TimelineRunner(const Timeline& timeline, std::uint64_t seed, Station* station = nullptr);
 
     // Moves the clock to `now_ms` since the scenario started (never backwards).
     void advance(devicemodel::DeviceMemory& memory, double now_ms, const EventSink& log);
@@ -43,6 +46,7 @@ private:
     void walk_to(std::size_t index, std::int64_t pass, double t);
 
     const Timeline& timeline_;
+    Station* station_;
     std::vector<Walk> walks_;         // one per step (used by random walks only)
     double last_ms_ = -1;             // -1: nothing run yet, so steps at 0 ms fire
     bool finished_ = false;

@@ -148,6 +148,13 @@ void Listeners::restart_sessions() {
     for (auto& l : udp_) l->restart_session();
 }
 
+std::vector<station::PushTarget> Listeners::push_targets() {
+    std::vector<station::PushTarget> targets;
+    for (auto& l : tcp_) l->push_targets(targets);
+    for (auto& l : udp_) l->push_targets(targets);
+    return targets;
+}
+
 std::string port_list(const std::vector<std::uint16_t>& ports) {
     std::string text;
     for (auto port : ports) text += (text.empty() ? "" : ",") + std::to_string(port);

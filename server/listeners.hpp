@@ -42,6 +42,7 @@ public:
 
     void refuse_connections(bool refusing) override;
     void restart_sessions() override;
+    std::vector<station::PushTarget> push_targets() override;
 
 private:
     void listen_hostlink(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,

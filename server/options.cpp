@@ -65,6 +65,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("labels", po::value<std::vector<std::string>>(), "declare global labels from this JSON or GX Works3 CSV file; repeatable (docs/labels.md)")
         ("record", po::value<std::string>(), "record every request and response to this JSON-lines file (docs/scenarios.md)")
         ("clock-speed", po::value<double>(), "run the CPU's clock (scan, timers, scenarios) this many times faster than real time (default 1)")
+        ("timing", po::value<std::string>(), "when answers leave: instant (default), end_of_scan or model (docs/timing.md)")
         ("clock", po::value<std::string>(), "realtime (default) or frozen: no scan until POST /api/clock/step or PUT /api/clock (docs/ci.md)")
         ("snapshot", po::value<std::string>(), "start from a station snapshot file saved from GET /api/snapshots/{name}/file (docs/ci.md)")
         ("check-config", po::value<std::string>(), "check this configuration file (and the profile, scenarios and snapshot it names) and exit: 0 good, 2 with the error")
@@ -192,6 +193,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         if (!(c.clock_speed >= config::kMinClockSpeed && c.clock_speed <= config::kMaxClockSpeed))
             throw ConfigError(fmt::format("--clock-speed {}: out of range; {}", c.clock_speed, config::kClockSpeedFix));
     }
+    if (vm.count("timing")) c.timing.mode = config::parse_timing_mode(vm["timing"].as<std::string>(), "--timing");
     if (vm.count("clock")) {
         auto mode = vm["clock"].as<std::string>();
         if (mode != "realtime" && mode != "frozen")

@@ -108,4 +108,8 @@ void TcpListener::stop() {
     for (auto& [_, session] : sessions) session->close();
 }
 
+void TcpListener::push_targets(std::vector<station::PushTarget>& targets) {
+    for (auto& entry : sessions_) targets.push_back(entry.second->push_target());
+}
+
 }  // namespace slmp::server

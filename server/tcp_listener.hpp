@@ -30,6 +30,8 @@ public:
     // A scenario's power cut or refusal period: while true the port is closed
     // (clients are refused); afterwards it listens again (station/scenario_station.hpp).
     void set_refusing(bool refusing);
+    // Ondemand: each open connection (station/transports.hpp).
+    void push_targets(std::vector<station::PushTarget>& targets);
 
 private:
     void listen();

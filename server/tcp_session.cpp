@@ -4,6 +4,7 @@
 
 #include "server/outbox.hpp"
 #include "station/log_exception.hpp"
+#include "station/scan_loop.hpp"
 
 namespace slmp::server {
 
@@ -19,6 +20,15 @@ protocol::DataCodePolicy to_policy(config::DataCode code) {
         case config::DataCode::Auto: break;
     }
     return protocol::DataCodePolicy::Auto;
+}
+
+std::pair<protocol::FrameKind, protocol::Codec> request_shape(std::span<const std::uint8_t> f) {
+    using protocol::Codec;
+    using protocol::FrameKind;
+    if (f.size() >= 2 && f[0] == 0x54 && f[1] == 0x00) return {FrameKind::E4, Codec::Binary};
+    if (f.size() >= 4 && f[0] == '5' && f[1] == '4' && f[2] == '0' && f[3] == '0') return {FrameKind::E4, Codec::Ascii};
+    if (f.size() >= 4 && f[0] == '5' && f[1] == '0' && f[2] == '0' && f[3] == '0') return {FrameKind::E3, Codec::Ascii};
+    return {FrameKind::E3, Codec::Binary};
 }
 
 TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Station& station, const config::PortConfig& port,
@@ -70,6 +80,22 @@ void TcpSession::close(const std::string& why) {
     close();
 }
 
+station::PushTarget TcpSession::push_target() {
+    std::weak_ptr<TcpSession> weak = shared_from_this();
+    return {session_.id, peer_, last_kind_, last_codec_, [weak](std::vector<std::uint8_t> bytes) {
+                if (auto session = weak.lock()) session->push(std::move(bytes));
+            }};
+}
+
+void TcpSession::push(std::vector<std::uint8_t> bytes) {
+    if (!outbox_ || closed_) return;
+    outbox_->add(std::move(bytes), {});
+    push_pending_ = true;
+    if (sending_) return;   // serve() sends it after the responses it is writing
+    boost::system::error_code ec;
+    socket_.cancel(ec);     // the read returns operation_aborted; serve() sends, then reads again
+}
+
 void TcpSession::finish(const std::string& why) {
     if (closed_) return;
     closed_ = true;
@@ -82,19 +108,25 @@ void TcpSession::finish(const std::string& why) {
 awaitable<void> TcpSession::serve() {
     auto self = shared_from_this();   // keeps the session alive while it serves
     std::vector<std::uint8_t> pending;   // bytes received but not yet a whole frame
-    Outbox outbox(socket_);   // responses on their way out, as scenarios ask (server/outbox.hpp)
+    Outbox outbox(socket_, station_.scan_loop());   // responses on their way out, as scenarios ask (server/outbox.hpp)
+    outbox_ = &outbox;
     std::array<std::uint8_t, 8192> chunk;
     for (;;) {
         boost::system::error_code ec;
         outbox.watch_hold();
         auto n = co_await socket_.async_read_some(asio::buffer(chunk), asio::redirect_error(use_awaitable, ec));
         if (outbox.hold_expired() && ec == asio::error::operation_aborted) ec = {};   // send what a coalescing hold kept
+        if (push_pending_ && ec == asio::error::operation_aborted && socket_.is_open()) ec = {};   // an Ondemand push woke the read
         if (ec) {
             if (ec != asio::error::eof && ec != asio::error::operation_aborted) close_reason_ = ec.message();
             break;
         }
         if (n > 0) last_activity_ = std::chrono::steady_clock::now();
         pending.insert(pending.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
+        // end_of_scan (docs/timing.md): what arrived during this scan is
+        // executed at its END, in order, and answered then.
+        if (n > 0 && station_.timing_mode() == config::TimingMode::EndOfScan && station_.scan_loop())
+            co_await station_.scan_loop()->until_scan_after(station_.scan_loop()->scans());
 
         // Answer every whole frame now in the buffer, in order, in one write.
         // They all arrived before any was answered, so they stood in the
@@ -111,9 +143,11 @@ awaitable<void> TcpSession::serve() {
             auto handled = station_.handle(input, policy_, session_, peer_);
             auto& outcome = handled.outcome;
             if (outcome.action == Outcome::Action::NeedMore) break;
+            if (outcome.command != 0) std::tie(last_kind_, last_codec_) = request_shape(input);
             offset += outcome.consumed;
             if (outcome.action == Outcome::Action::Respond || outcome.command != 0) ++session_.queued_ahead;   // not skipped garbage
-            if (outcome.action == Outcome::Action::Respond) outbox.add(std::move(outcome.response), handled.delivery);
+            if (outcome.action == Outcome::Action::Respond)
+                outbox.add(std::move(outcome.response), handled.delivery, handled.release);
             if (outcome.action == Outcome::Action::Close) {
                 close_after = true;
                 reset_after = handled.reset;
@@ -128,7 +162,14 @@ awaitable<void> TcpSession::serve() {
         }
         pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(offset));
         note_pending(pending.size(), offset > 0);
+        sending_ = true;
+        push_pending_ = false;
         co_await outbox.send(ec);
+        while (push_pending_ && !ec) {   // pushes queued while it wrote
+            push_pending_ = false;
+            co_await outbox.send(ec);
+        }
+        sending_ = false;
         if (ec) {
             close_reason_ = "write failed: " + ec.message();
             break;
@@ -140,6 +181,7 @@ awaitable<void> TcpSession::serve() {
         }
         if (close_after) break;
     }
+    outbox_ = nullptr;
     finish(close_reason_);
 }
 

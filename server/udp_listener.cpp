@@ -5,12 +5,15 @@
 #include "server/tcp_session.hpp"
 #include "server/udp_delivery.hpp"
 #include "station/log_exception.hpp"
+#include "station/scan_loop.hpp"
 
 namespace slmp::server {
 
 namespace asio = boost::asio;
 using asio::ip::udp;
 using protocol::Outcome;
+
+constexpr std::size_t kMaxPushPeers = 256;   // UDP peers an Ondemand push reaches (docs/timing.md)
 
 UdpListener::UdpListener(asio::io_context& io, station::Station& station, const config::PortConfig& port,
                          const asio::ip::address& bind)
@@ -35,6 +38,8 @@ asio::awaitable<void> UdpListener::serve() {
             spdlog::debug("UDP port {}: receive failed: {}", port_, ec.message());
             continue;
         }
+        if (station_.timing_mode() == config::TimingMode::EndOfScan && station_.scan_loop())   // docs/timing.md
+            co_await station_.scan_loop()->until_scan_after(station_.scan_loop()->scans());
         const protocol::Peer peer{protocol::Transport::Udp, sender.address().to_string(), sender.port(), port_};
         auto input = std::span<const std::uint8_t>(datagram.data(), n);
         auto handled = station_.handle(input, policy_, session_, peer);
@@ -46,8 +51,15 @@ asio::awaitable<void> UdpListener::serve() {
         }
         if (outcome.consumed < n)
             spdlog::debug("{} {} byte(s) after the request frame ignored", peer.text(), n - outcome.consumed);
+        // Remember who spoke, for Ondemand pushes; bounded, so a flood of
+        // source ports cannot grow it without end (later peers are not pushed to).
+        if (outcome.command != 0 && (peers_.size() < kMaxPushPeers || peers_.count(sender))) {
+            auto [kind, codec] = request_shape(input);
+            peers_[sender] = {kind, codec};
+        }
         if (outcome.action == Outcome::Action::Restart) station_.restart();
         if (outcome.action != Outcome::Action::Respond) continue;
+        if (handled.release && station_.scan_loop()) co_await station_.scan_loop()->until(*handled.release);
         co_await send_datagrams(socket_, sender, outcome.response, handled.delivery, ec);
         if (ec) spdlog::debug("{} send failed: {}", peer.text(), ec.message());
     }
@@ -55,6 +67,17 @@ asio::awaitable<void> UdpListener::serve() {
 
 void UdpListener::restart_session() {
     session_ = station_.new_session(config_);
+}
+
+void UdpListener::push_targets(std::vector<station::PushTarget>& targets) {
+    for (const auto& entry : peers_) {
+        const auto& to = entry.first;
+        const protocol::Peer peer{protocol::Transport::Udp, to.address().to_string(), to.port(), port_};
+        targets.push_back({session_.id, peer, entry.second.kind, entry.second.codec, [this, to](std::vector<std::uint8_t> bytes) {
+                               auto data = std::make_shared<std::vector<std::uint8_t>>(std::move(bytes));
+                               socket_.async_send_to(asio::buffer(*data), to, [data](const boost::system::error_code&, std::size_t) {});
+                           }});
+    }
 }
 
 void UdpListener::stop() {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 
 #include "station/asio.hpp"
 
@@ -22,6 +23,8 @@ public:
     // After a Remote RESET: the port's session starts afresh (locked again when
     // the CPU has a remote password).
     void restart_session();
+    // Ondemand: every peer that has sent this port a request (station/transports.hpp).
+    void push_targets(std::vector<station::PushTarget>& targets);
 
 private:
     boost::asio::awaitable<void> serve();
@@ -32,6 +35,11 @@ private:
     protocol::Session session_;
     boost::asio::ip::udp::socket socket_;
     std::uint16_t port_ = 0;
+    struct SeenPeer {
+        protocol::FrameKind kind;
+        protocol::Codec codec;
+    };
+    std::map<boost::asio::ip::udp::endpoint, SeenPeer> peers_;   // who an Ondemand push goes to
 };
 
 }  // namespace slmp::server

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -30,6 +31,16 @@ struct RequestRecord {
     const protocol::Request& request;          // as decoded (the same the scenarios and the engine saw)
     const protocol::Outcome& outcome;
     std::chrono::nanoseconds latency{};        // time spent in the engine
+    // The "model" timing mode's response time for it (docs/timing.md); unset in the other modes.
+    std::optional<std::chrono::microseconds> modelled{};
+};
+
+// One Ondemand push (2101) the station sent to a client (docs/timing.md). Valid only during the call.
+struct PushRecord {
+    std::uint64_t connection = 0;              // TCP connection id, or the UDP port's session id
+    const protocol::Peer& peer;
+    std::span<const std::uint8_t> frame;       // the bytes sent
+    std::string_view why;                      // "POST /api/ondemand", "timeline /timeline/steps/0", ...
 };
 
 struct Connection {
@@ -46,6 +57,7 @@ public:
     virtual void on_request(const RequestRecord&) {}
     virtual void on_opened(const Connection&) {}
     virtual void on_closed(const Connection&, std::string_view /*why*/) {}
+    virtual void on_pushed(const PushRecord&) {}
 
 protected:
     ~ActivityObserver() = default;
@@ -64,6 +76,9 @@ public:
     void request(const RequestRecord& record);
     void opened(Connection connection);
     void closed(std::uint64_t id, std::string_view why);
+    void pushed(const PushRecord& record) {
+        for (auto* observer : observers_) observer->on_pushed(record);
+    }
 
     // Open TCP connections by id (ids grow, so this is also the order they opened in).
     const std::map<std::uint64_t, Connection>& connections() const { return connections_; }

@@ -19,7 +19,7 @@ devicemodel::CalendarTime local_calendar(std::chrono::system_clock::time_point n
 
 ScanLoop::ScanLoop(asio::io_context& io, std::vector<devicemodel::Cpu*> cpus, std::chrono::milliseconds period,
                    double speed, bool frozen)
-    : timer_(io), cpus_(std::move(cpus)), period_(period), clock_(speed, frozen) {}
+    : timer_(io), cpus_(std::move(cpus)), period_(period), clock_(speed, frozen), last_end_(clock_.now()) {}
 
 void ScanLoop::start() {
     asio::co_spawn(timer_.get_executor(), run(), log_exception("scan cycle stopped"));
@@ -28,20 +28,85 @@ void ScanLoop::start() {
 void ScanLoop::stop() {
     stopped_ = true;
     timer_.cancel();
+    wake_waiters();
 }
 
 void ScanLoop::run_clock(double speed) {
     clock_.run(speed);
     timer_.cancel();   // wakes a loop that sleeps while frozen
+    wake_waiters();    // their real-time deadlines follow the new speed
 }
 
-void ScanLoop::freeze_clock() { clock_.freeze(); }
+void ScanLoop::freeze_clock() {
+    clock_.freeze();
+    wake_waiters();
+}
+
+void ScanLoop::set_time(VirtualClock::TimePoint cpu_time) {
+    clock_.set(cpu_time);
+    last_end_ = cpu_time;
+    wake_waiters();
+}
+
+void ScanLoop::wake_waiters() {
+    for (auto* timer : *waiters_) timer->cancel();
+}
+
+namespace {
+
+// Registers a waiting coroutine's timer for as long as it waits.
+class WaiterGuard {
+public:
+    WaiterGuard(const std::shared_ptr<std::vector<asio::steady_timer*>>& list, asio::steady_timer& timer)
+        : list_(list), timer_(&timer) {
+        list->push_back(timer_);
+    }
+    ~WaiterGuard() {
+        if (auto list = list_.lock()) std::erase(*list, timer_);
+    }
+    WaiterGuard(const WaiterGuard&) = delete;
+    WaiterGuard& operator=(const WaiterGuard&) = delete;
+
+private:
+    std::weak_ptr<std::vector<asio::steady_timer*>> list_;
+    asio::steady_timer* timer_;
+};
+
+}  // namespace
+
+asio::awaitable<void> ScanLoop::until_scan_after(std::uint64_t seen) {
+    asio::steady_timer timer(timer_.get_executor());
+    WaiterGuard guard(waiters_, timer);
+    while (scans_ <= seen && !stopped_) {
+        timer.expires_at(std::chrono::steady_clock::time_point::max());   // the next scan cancels it
+        boost::system::error_code ec;
+        co_await timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+    }
+}
+
+asio::awaitable<void> ScanLoop::until(VirtualClock::TimePoint at) {
+    asio::steady_timer timer(timer_.get_executor());
+    WaiterGuard guard(waiters_, timer);
+    while (!stopped_) {
+        const auto now = clock_.now();
+        if (now >= at) break;
+        if (clock_.frozen())
+            timer.expires_at(std::chrono::steady_clock::time_point::max());   // a step or run_clock() cancels it
+        else
+            timer.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>((at - now) / clock_.speed()));
+        boost::system::error_code ec;
+        co_await timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+    }
+}
 
 void ScanLoop::scan_once() {
     const auto now = clock_.now();
     auto calendar = local_calendar(clock_.calendar());
     for (auto* cpu : cpus_) cpu->runtime().scan(cpu->memory(), now, calendar);
+    ++scans_;
+    last_end_ = now;
     if (after_scan_) after_scan_(now);
+    if (!waiters_->empty()) wake_waiters();
 }
 
 void ScanLoop::step_scans(std::uint64_t scans) {

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "station/asio.hpp"
@@ -41,17 +42,35 @@ public:
     // shorter when `by` is not a whole number of scan times.
     void step_time(std::chrono::microseconds by);
     // A restored snapshot's CPU time (the mode stays).
-    void set_time(VirtualClock::TimePoint cpu_time) { clock_.set(cpu_time); }
+    void set_time(VirtualClock::TimePoint cpu_time);
+
+    // Answers held for the clock (docs/timing.md). until_scan_after() returns
+    // once the scan after the `seen`-th has ended (its END processing),
+    // until() once CPU time has reached `at`; while the clock is frozen both
+    // hold until it is stepped or runs again. Any number may wait at once.
+    std::uint64_t scans() const { return scans_; }
+    VirtualClock::TimePoint last_end() const { return last_end_; }   // CPU time of the last END (start: the clock's origin)
+    boost::asio::awaitable<void> until_scan_after(std::uint64_t seen);
+    boost::asio::awaitable<void> until(VirtualClock::TimePoint at);
+    std::size_t waiting() const { return waiters_->size(); }   // answers held now (GET /api/info)
 
 private:
     boost::asio::awaitable<void> run();
     void scan_once();
+    void wake_waiters();   // each re-checks its condition against the clock
+
+    using Waiters = std::vector<boost::asio::steady_timer*>;
 
     boost::asio::steady_timer timer_;
     std::vector<devicemodel::Cpu*> cpus_;
     std::chrono::milliseconds period_;
     VirtualClock clock_;
     bool stopped_ = false;
+    std::uint64_t scans_ = 0;
+    VirtualClock::TimePoint last_end_;
+    // Shared with each waiting coroutine, which removes itself also when it is
+    // destroyed after the loop (at shutdown).
+    std::shared_ptr<Waiters> waiters_ = std::make_shared<Waiters>();
     std::function<void(std::chrono::steady_clock::time_point)> after_scan_;
 };
 

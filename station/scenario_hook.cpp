@@ -162,6 +162,13 @@ void ScenarioHook::on_opened(const Connection& c) {
     for (auto& r : recorders_) r->opened(std::chrono::steady_clock::now(), at);
 }
 
+void ScenarioHook::on_pushed(const PushRecord& p) {
+    if (recorders_.empty()) return;
+    const scenarios::RecordedLink at{p.connection, p.peer.transport, p.peer.endpoint(), p.peer.local_port};
+    const std::vector<std::uint8_t> frame(p.frame.begin(), p.frame.end());
+    for (auto& r : recorders_) r->pushed(std::chrono::steady_clock::now(), at, frame);
+}
+
 void ScenarioHook::on_closed(const Connection& c, std::string_view why) {
     ordinals_.erase(c.id);
     const scenarios::RecordedLink at{c.id, c.peer.transport, c.peer.endpoint(), c.peer.local_port};

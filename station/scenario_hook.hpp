@@ -11,6 +11,7 @@
 #include <chrono>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ struct Handled {
     protocol::Outcome outcome;
     scenarios::Delivery delivery;   // how to send outcome.response
     bool reset = false;             // close with RST (SO_LINGER 0) instead of FIN
+    // The "model" timing mode: the CPU time (ScanLoop::clock()) before which
+    // the response may not leave (docs/timing.md); unset: at once.
+    std::optional<std::chrono::steady_clock::time_point> release;
 };
 
 class ScenarioHook : public ActivityObserver {
@@ -88,6 +92,7 @@ public:
 
     void on_opened(const Connection& connection) override;
     void on_closed(const Connection& connection, std::string_view why) override;
+    void on_pushed(const PushRecord& push) override;   // recorded as an "ondemand" event
 
 private:
     scenarios::RunnerSet runners_;

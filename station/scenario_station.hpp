@@ -8,6 +8,9 @@
 // refused at once). The simulator can only do the latter without raw sockets.
 #pragma once
 
+#include <functional>
+#include <string>
+
 #include "scenarios/runner.hpp"
 #include "station/activity.hpp"
 #include "station/transports.hpp"
@@ -16,17 +19,21 @@ namespace slmp::station {
 
 class ScenarioStation final : public scenarios::Station {
 public:
-    ScenarioStation(Activity& activity, Transports& transports) : activity_(activity), transports_(transports) {}
+    using Ondemand = std::function<void(const scenarios::OndemandAction&, const std::string&)>;
+    ScenarioStation(Activity& activity, Transports& transports, Ondemand ondemand)
+        : activity_(activity), transports_(transports), ondemand_(std::move(ondemand)) {}
 
     void power_off() override;
     void power_on() override;
     void refuse_connections(bool refuse) override;
+    void ondemand(const scenarios::OndemandAction& action, const std::string& why) override { ondemand_(action, why); }
 
 private:
     void update_ports();
 
     Activity& activity_;
     Transports& transports_;
+    Ondemand ondemand_;
     bool off_ = false;
     bool refusing_ = false;
 };

@@ -5,7 +5,9 @@
 #include <spdlog/spdlog.h>
 
 #include "station/log_outcome.hpp"
+#include "protocol/error_response.hpp"
 #include "station/persistence.hpp"
+#include "station/response_timing.hpp"
 #include "station/scan_loop.hpp"
 #include "station/scenario_station.hpp"
 #include "station/station_snapshot.hpp"
@@ -15,7 +17,7 @@ namespace slmp::station {
 using protocol::Outcome;
 
 Station::Station(config::Profile profile, protocol::EngineOptions options)
-    : cpu_(std::move(profile.cpu)), engine_(cpu_, std::move(profile.port), options) {}
+    : cpu_(std::move(profile.cpu)), engine_(cpu_, std::move(profile.port), options), timing_model_(profile.timing) {}
 
 Station::Station(boost::asio::io_context& io, const config::ServerConfig& config)
     : Station(config::resolve_profile(config), protocol::EngineOptions{config.max_request_bytes}) {
@@ -32,6 +34,10 @@ Station::Station(boost::asio::io_context& io, const config::ServerConfig& config
         engine_.add_cpu(cpu.number, *other_cpus_.back(), std::move(profile.port));
     }
     start_cpu_runtime(io);
+    timing_mode_ = config_.timing.mode;
+    timing_model_ = config_.timing.model.over(timing_model_);
+    if (timing_mode_ == config::TimingMode::Model)
+        timing_ = std::make_unique<ResponseTiming>(timing_model_, config_.timing.jitter, config_.timing.seed);
 }
 
 Station::~Station() = default;
@@ -90,14 +96,50 @@ Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodeP
     scenarios::Incoming incoming{engine_.decode(input, policy, session.own)};
     auto plan = scenario_.before(incoming, input, session, peer);
     Handled handled;
-    handled.outcome = plan.pass() ? engine_.execute(incoming.request, session) : scenario_.answer(plan, incoming.request);
+    std::optional<std::chrono::microseconds> modelled;
+    if (timing_ && plan.pass() && incoming.request.complete() && incoming.request.has_command)
+        modelled = model_response(incoming.request, input, handled);   // may answer the monitoring timer's CF71
+    if (handled.outcome.action == Outcome::Action::NeedMore)
+        handled.outcome = plan.pass() ? engine_.execute(incoming.request, session) : scenario_.answer(plan, incoming.request);
     scenario_.after(plan, handled, input, session, peer);
     const auto& outcome = handled.outcome;
     if (outcome.action == Outcome::Action::NeedMore) return handled;
     log_outcome(peer, outcome);
     activity_.request({session.id, peer, input.first(outcome.consumed), incoming.request, outcome,
-                       std::chrono::steady_clock::now() - started});
+                       std::chrono::steady_clock::now() - started, modelled});
     return handled;
+}
+
+std::optional<std::chrono::microseconds> Station::model_response(const protocol::Request& request,
+                                                                 std::span<const std::uint8_t> input, Handled& handled) {
+    using std::chrono::microseconds;
+    const auto& clock = scan_->clock();
+    const auto now = clock.now();
+    // The next END in CPU time: a running clock's scan covers period × speed of it.
+    const auto cpu_period = clock.frozen() ? std::chrono::duration_cast<microseconds>(scan_->period())
+                                           : std::chrono::duration_cast<microseconds>(scan_->period() * clock.speed());
+    const auto next_end = scan_->last_end() + cpu_period;
+    const auto scan_wait = next_end > now ? std::chrono::duration_cast<microseconds>(next_end - now) : microseconds{0};
+    const auto modelled = timing_->modelled(request, scan_wait);
+    const auto timer = ResponseTiming::monitoring_timer(request, input);
+    if (timer.count() > 0 && modelled > timer) {
+        // The port gives up when the timer runs out (docs/timing.md: CF71,
+        // "processing aborted because of a timeout"); the CPU never ran the
+        // request, so nothing is read or written.
+        auto& o = handled.outcome;
+        o.action = Outcome::Action::Respond;
+        o.consumed = request.size;
+        o.command = request.command;
+        o.subcommand = request.subcommand;
+        o.end_code = protocol::EndCode::RelayTimeout;
+        o.response = protocol::encode_error_response(request.header, request.command, request.subcommand, o.end_code);
+        o.note = "the modelled response time exceeds the monitoring timer (" + std::to_string(timer.count()) +
+                 " ms); answered CF71 when it ran out";
+        handled.release = now + timer;
+        return timer;
+    }
+    handled.release = now + modelled;
+    return modelled;
 }
 
 // Remote RESET (slmp-labels-remote-misc.md §5.6): the CPU has restarted; as on

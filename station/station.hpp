@@ -7,6 +7,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <chrono>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -24,6 +26,7 @@
 namespace slmp::station {
 
 class Persistence;
+class ResponseTiming;
 class ScanLoop;
 class ScenarioStation;
 struct StationSnapshot;
@@ -53,6 +56,17 @@ public:
     // the input holds no whole frame yet: NeedMore).
     Handled handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
                    const protocol::Peer& peer);
+    // Ondemand 2101 (docs/timing.md): the words of `action`'s devices, now,
+    // framed in each client's shape, to the clients its `to` names; recorded
+    // and reported to the activity observers. Returns what was sent to whom
+    // (empty: no client). Throws config::ConfigError for devices past the
+    // CPU's sizes or an unknown target.
+    struct Pushed {
+        std::uint64_t connection = 0;
+        protocol::Peer peer;
+        std::vector<std::uint8_t> frame;
+    };
+    std::vector<Pushed> ondemand(const scenarios::OndemandAction& action, const std::string& why);
     // Called by a transport after a Remote RESET (Outcome::Action::Restart) was
     // answered: the CPU has restarted, every connection closes.
     void restart();
@@ -78,6 +92,12 @@ public:
 
     // The scan cycle and its virtual clock (station/scan_loop.hpp); null in a bare station.
     ScanLoop* scan_loop() { return scan_.get(); }
+    // When answers leave (docs/timing.md). Instant in a bare station. With
+    // end_of_scan the transports wait for scan_loop()->until_scan_after()
+    // before they hand over what they read, so requests execute at END; with
+    // model, handle() sets Handled::release.
+    config::TimingMode timing_mode() const { return timing_mode_; }
+    const config::TimingModel& timing_model() const { return timing_model_; }
 
     devicemodel::Cpu& cpu() { return cpu_; }
     const devicemodel::Cpu& cpu() const { return cpu_; }
@@ -93,6 +113,10 @@ private:
     void start_scenarios(std::vector<scenarios::Scenario> list);
     void take_initial_snapshot();                                 // station_snapshot.cpp; applies --snapshot
     std::vector<devicemodel::Cpu*> all_cpus();
+    // The model mode between decode and execute: the modelled time, or the
+    // monitoring timer's CF71 when the model exceeds it (response_timing.hpp).
+    std::optional<std::chrono::microseconds> model_response(const protocol::Request& request,
+                                                            std::span<const std::uint8_t> input, Handled& handled);
 
     config::ServerConfig config_;   // with the scenarios' initial state joined
     devicemodel::Cpu cpu_;
@@ -107,6 +131,9 @@ private:
     Transports* transports_ = nullptr;                   // connect()
     std::unique_ptr<ScenarioStation> scenario_station_;  // null without scenarios
     std::unique_ptr<StationSnapshot> initial_;           // what reset() returns to (connect())
+    config::TimingModel timing_model_;                   // the profile's, with the configuration's overrides
+    config::TimingMode timing_mode_ = config::TimingMode::Instant;
+    std::unique_ptr<ResponseTiming> timing_;             // model mode only
 };
 
 }  // namespace slmp::station

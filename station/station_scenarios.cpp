@@ -28,7 +28,14 @@ void Station::start_scenarios(std::vector<scenarios::Scenario> list) {
     // /api/scenarios, /api/recording), so the hook is wired up even when idle.
     const bool later = config_.http.enabled;
     if (!list.empty() || later) {
-        scenario_station_ = std::make_unique<ScenarioStation>(activity_, *transports_);
+        auto ondemand = [this](const scenarios::OndemandAction& action, const std::string& why) {
+            try {
+                this->ondemand(action, why);
+            } catch (const config::ConfigError& e) {
+                spdlog::warn("scenario: {}: Ondemand not sent: {}", why, e.what());
+            }
+        };
+        scenario_station_ = std::make_unique<ScenarioStation>(activity_, *transports_, ondemand);
         scenario_.attach(cpu_, *scenario_station_);
         if (!list.empty()) scenario_.start(std::move(list), cpu_, *scenario_station_);
         scan_->after_scan([this](std::chrono::steady_clock::time_point now) { scenario_.scanned(now); });

@@ -395,6 +395,7 @@ async function start() {
   const ports = info.ports;
   $('#ports').textContent = `SLMP TCP ${ports.tcp.join(', ') || '—'} · UDP ${ports.udp.join(', ') || '—'}`;
   document.title = `${info.profile.name} — slmp-sim monitor`;
+  if (info.timing) $('#timing').textContent = `timing ${info.timing.mode}`;
 
   $('#watch-form').addEventListener('submit', (event) => {
     event.preventDefault();

@@ -40,6 +40,12 @@ bool frozen_in_run(CommandContext& ctx, const FileRef& file) {
     return DriveSet::parameter_file(file.path) || (file.drive == 0 && DriveSet::program_file(file.path));
 }
 
+// What the call monitor and recordings show of the request (Outcome::named):
+// "2:LOGS/A.CSV", the copy's destination first as the request has it.
+void note_file(CommandContext& ctx, const FileRef& file) {
+    ctx.named += (ctx.named.empty() ? "" : ", ") + std::to_string(file.drive) + ":" + file.path;
+}
+
 }  // namespace
 
 // 1810 Read Directory/File.
@@ -55,6 +61,7 @@ EndCode file_list(CommandContext& ctx) {
         dir.path = file_name(in, d, "directory path");
     else if (in.u16("fixed 0000") != 0)
         fixed = false;
+    note_file(ctx, dir);
     if (!in.finish()) return in.error();
     if (!fixed || start == 0 || count == 0 || count > kMaxListCount) return EndCode::BadRequestContent;
     devicemodel::Listing listing;
@@ -81,6 +88,7 @@ EndCode file_search(CommandContext& ctx) {
     FileRef file{in.u16("drive No."), {}};
     auto fixed = in.u16("fixed 0000");
     file.path = file_name(in, d, "file name");
+    note_file(ctx, file);
     if (!in.finish()) return in.error();
     if (fixed != 0) return EndCode::BadRequestContent;
     if (d.long_form() && given.find_first_not_of(std::string("0\0", 2)) != std::string::npos)
@@ -103,6 +111,7 @@ EndCode file_new(CommandContext& ctx) {
     FileRef file{in.u16("drive No."), {}};
     auto size = in.u32("file size");
     file.path = file_name(in, d, "file name");
+    note_file(ctx, file);
     if (!in.finish()) return in.error();
     if (d.long_form() && given.find_first_not_of(std::string("0\0", 2)) != std::string::npos)
         return EndCode::BadRequestContent;
@@ -120,6 +129,7 @@ EndCode file_delete(CommandContext& ctx) {
     auto given = password(in, d, bad);
     FileRef file{in.u16("drive No."), {}};
     file.path = file_name(in, d, "file name");
+    note_file(ctx, file);
     if (!in.finish()) return in.error();
     if (bad != EndCode::Ok) return bad;
     if (ql_running(ctx) && (DriveSet::program_file(file.path) || DriveSet::parameter_file(file.path) ||
@@ -139,9 +149,11 @@ EndCode file_copy(CommandContext& ctx) {
     auto to_password = password(in, d, bad);
     FileRef to{in.u16("destination drive No."), {}};
     to.path = file_name(in, d, "destination file name");
+    note_file(ctx, to);
     auto from_password = password(in, d, bad);
     FileRef from{in.u16("source drive No."), {}};
     from.path = file_name(in, d, "source file name");
+    note_file(ctx, from);
     if (!in.finish()) return in.error();
     if (bad != EndCode::Ok || fixed != 0) return EndCode::BadRequestContent;
     // iQ-R: drive 0 (program memory) is neither source nor destination (§6.5).
@@ -162,6 +174,7 @@ EndCode file_state(CommandContext& ctx) {
     FileRef file{in.u16("drive No."), {}};
     auto attribute = in.u16("attribute");
     file.path = file_name(in, d, "file name");
+    note_file(ctx, file);
     if (!in.finish()) return in.error();
     // Other values "may not raise an error" but are system values: refused here (chosen).
     if (bad != EndCode::Ok || (attribute != 0x0001 && attribute != 0x0020)) return EndCode::BadRequestContent;
@@ -180,6 +193,7 @@ EndCode file_date(CommandContext& ctx) {
     auto date = in.u16("date");
     auto time = in.u16("time");
     file.path = file_name(in, d, "file name");
+    note_file(ctx, file);
     if (!in.finish()) return in.error();
     auto when = devicemodel::from_dos(date, time);
     if (!fixed || !when) return EndCode::BadRequestContent;
@@ -197,6 +211,7 @@ EndCode file_open(CommandContext& ctx) {
     auto mode = in.u16("open mode");
     FileRef file{in.u16("drive No."), {}};
     file.path = file_name(in, d, "file name");
+    note_file(ctx, file);
     if (!in.finish()) return in.error();
     if (bad != EndCode::Ok || (mode != 0x0000 && mode != 0x0100)) return EndCode::BadRequestContent;
     if (auto code = password_check(ctx, d, file, given); code != EndCode::Ok) return code;

@@ -66,6 +66,26 @@ Response Client::receive_response(std::uint16_t serial, Clock::time_point deadli
     }
 }
 
+Response Client::next_push(Clock::time_point deadline) {
+    if (!open_) {
+        link_.open(deadline);
+        open_ = true;
+    }
+    for (;;) {
+        bool garbage = false;
+        if (!pending_.empty()) {
+            auto parsed = protocol::client::parse_response(pending_, &garbage);
+            if (garbage) throw ConnectionError("the bytes from " + link_.peer() + " are not an SLMP frame");
+            if (parsed) {
+                pending_.erase(pending_.begin(), pending_.begin() + static_cast<long>(parsed->size));
+                return *parsed;
+            }
+        }
+        auto bytes = link_.receive(deadline);
+        pending_.insert(pending_.end(), bytes.begin(), bytes.end());
+    }
+}
+
 std::optional<Response> Client::round_trip(std::span<const std::uint8_t> request, bool silence_ok) {
     auto deadline = Clock::now() + target_.timeout;
     if (!open_) {

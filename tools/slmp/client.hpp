@@ -38,6 +38,10 @@ public:
     std::optional<protocol::client::Response> exchange_allow_silence(std::span<const std::uint8_t> request);
 
     Link& link() { return link_; }
+    // Ondemand: the next frame the station sends unasked, a 2101 push
+    // (docs/timing.md). Connects first when needed; throws ConnectionError
+    // when none comes before `deadline` or the bytes are no response frame.
+    protocol::client::Response next_push(Clock::time_point deadline);
 
 private:
     std::optional<protocol::client::Response> round_trip(std::span<const std::uint8_t> request, bool silence_ok);

@@ -27,6 +27,8 @@ const std::array<CommandSpec, 15> kCommands = {{
     {"selftest", "[DATA]", "0619 Self Test: loopback of DATA (default 0123456789ABCDEF)", {}, run_selftest},
     {"lock", "PASSWORD", "1631 Remote Password Lock", {}, run_lock},
     {"unlock", "PASSWORD", "1630 Remote Password Unlock", {}, run_unlock},
+    {"ondemand", "--wait", "2101 Ondemand: wait for --count pushes (default 1), --timeout each; over UDP a 0101 "
+                           "first makes the simulator know this client", {"wait", "count"}, run_ondemand},
 }};
 // clang-format on
 

@@ -52,5 +52,6 @@ void run_type(Invocation& in);
 void run_selftest(Invocation& in);
 void run_lock(Invocation& in);
 void run_unlock(Invocation& in);
+void run_ondemand(Invocation& in);
 
 }  // namespace slmp::cli

@@ -96,6 +96,7 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         ("dword", po::value(&o.dwords), "random: a double-word device (read) or DEVICE=VALUE (write); repeatable")
         ("interval", po::value(&interval), "monitor: time between polls (default 1s)")
         ("count", po::value(&count), "monitor: stop after this many polls (default: until Ctrl-C)")
+        ("wait", po::bool_switch(&o.wait), "ondemand: wait for Ondemand (2101) pushes and print each (--count N, default 1)")
         ("force", po::bool_switch(&o.force), "run/pause: mode 0003, even if another client holds STOP/PAUSE")
         ("clear", po::value(&o.clear), "run: clear devices first: none (default), nonlatch, all");
     po::options_description hidden;

@@ -28,6 +28,7 @@ struct Options {
     std::vector<std::string> dwords;        // random: --dword DEVICE[=VALUE], repeatable
     std::chrono::milliseconds interval{1000};   // monitor
     std::optional<unsigned long> count;     // monitor: stop after N polls
+    bool wait = false;                      // ondemand
     bool force = false;                     // run, pause
     std::string clear = "none";             // run
     std::vector<std::string> given;         // names of the subcommand options actually given
