@@ -112,6 +112,7 @@ void bind_labels(Scenario& s, const devicemodel::LabelTable& labels) {
         std::visit(overloaded{
                        [&](SetStep& x) { b.bind(x.labels, step.pointer + "/set"); },
                        [](CopyStep&) {},
+                       [](OndemandAction&) {},   // devices only
                        [&](auto& x) { b.bind(x.device, step.pointer); },
                    },
                    step.action);
