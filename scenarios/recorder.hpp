@@ -37,7 +37,7 @@ public:
     // An Ondemand push the station sent unasked (docs/timing.md): by default a
     // response without a request, marked "ondemand".
     virtual void pushed(TimePoint at, const RecordedLink& link, const std::vector<std::uint8_t>& frame) {
-        exchange(at, link, {}, &frame, {"ondemand"});
+        exchange(at, link, {}, &frame, {"ondemand"}, "");
     }
 };
 

@@ -109,7 +109,10 @@ void TcpListener::stop() {
 }
 
 void TcpListener::push_targets(std::vector<station::PushTarget>& targets) {
-    for (auto& entry : sessions_) targets.push_back(entry.second->push_target());
+    // Ondemand pushes are SLMP frames: a front end's connections (host link,
+    // JW-51CM) on a port of their own take none.
+    for (auto& entry : sessions_)
+        if (auto* slmp = dynamic_cast<TcpSession*>(entry.second.get())) targets.push_back(slmp->push_target());
 }
 
 }  // namespace slmp::server

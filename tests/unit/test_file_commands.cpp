@@ -392,3 +392,14 @@ TEST_CASE("file protection: write-protect, system protect, capacity, read-only, 
     CHECK(ql(w).exchange(q, p("20 18 00 00 20 20 20 20 00 00 10 00 00 00 07 00 41 42 43 2E 51 50 47", "")) ==
           ql(w).expect(err(0x4024, 0x1820, 0x0000)));
 }
+
+TEST_CASE("the outcome names the file a request carried, for the call monitor and recordings", "[files]") {
+    for (const auto& w : kWires) {
+        INFO(w.name());
+        auto r = make_cpu("R08CPU");
+        file(r, 4, "LINE.CSV", 4, NameForm::Long);
+        auto search = p("11 18 40 00 00 00 00 00 04 00 00 00 08 00 4C 00 49 00 4E 00 45 00 2E 00 43 00 53 00 56 00",
+                        "181100400000000400000008004C0049004E0045002E004300530056");
+        CHECK(run(r, w.request(search)).named == "4:LINE.CSV");
+    }
+}

@@ -7,7 +7,10 @@ namespace slmp::cli {
 namespace {
 
 // clang-format off
-const std::array<CommandSpec, 15> kCommands = {{
+// A plain array counts its rows itself (adding a command is one row), and its
+// aggregate initialisation keeps each row's `accepts` list alive: a copy made
+// by std::to_array would leave the initializer_lists dangling.
+const CommandSpec kCommands[] = {
     {"read", "DEVICE [POINTS]", "0401 Device Read: POINTS words (default 1), or bits with --bits", {"bits"}, run_read},
     {"write", "DEVICE VALUE...", "1401 Device Write: words (-32768..65535, 0x..), or 0/1 with --bits", {"bits"}, run_write},
     {"random", "read|write ITEM...", "0403 Read Random / 1402 Write Random: read D0 M100 --dword D200; "
@@ -29,7 +32,7 @@ const std::array<CommandSpec, 15> kCommands = {{
     {"unlock", "PASSWORD", "1630 Remote Password Unlock", {}, run_unlock},
     {"ondemand", "--wait", "2101 Ondemand: wait for --count pushes (default 1), --timeout each; over UDP a 0101 "
                            "first makes the simulator know this client", {"wait", "count"}, run_ondemand},
-}};
+};
 // clang-format on
 
 }  // namespace
