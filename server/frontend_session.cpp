@@ -22,16 +22,7 @@ FrontEndSession::FrontEndSession(asio::ip::tcp::socket socket, station::Station&
       deadline_timer_(socket_.get_executor()),
       id_(station.next_session_id()),
       on_closed_(std::move(on_closed)) {
-    boost::system::error_code ec;
-    peer_.transport = protocol::Transport::Tcp;
-    if (auto remote = socket_.remote_endpoint(ec); ec) {
-        peer_.address = "?";
-    } else {
-        peer_.address = remote.address().to_string();
-        peer_.port = remote.port();
-    }
-    peer_.local_port = socket_.local_endpoint(ec).port();
-    socket_.set_option(asio::ip::tcp::no_delay(true), ec);
+    peer_ = accepted_peer(socket_);
 }
 
 void FrontEndSession::start() {

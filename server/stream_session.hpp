@@ -22,6 +22,23 @@ public:
     virtual const protocol::Peer& peer() const = 0;
 };
 
+// The client of an accepted connection and the port it reached ("?" when the
+// socket no longer knows); also turns Nagle off, as every session answers at once.
+inline protocol::Peer accepted_peer(boost::asio::ip::tcp::socket& socket) {
+    boost::system::error_code ec;
+    protocol::Peer peer;
+    peer.transport = protocol::Transport::Tcp;
+    if (auto remote = socket.remote_endpoint(ec); ec) {
+        peer.address = "?";
+    } else {
+        peer.address = remote.address().to_string();
+        peer.port = remote.port();
+    }
+    peer.local_port = socket.local_endpoint(ec).port();
+    socket.set_option(boost::asio::ip::tcp::no_delay(true), ec);
+    return peer;
+}
+
 // Builds the session for an accepted socket. `on_closed` must be called once
 // when the session ends; `connections` counts the port's open connections.
 using SessionFactory = std::function<std::shared_ptr<StreamSession>(
