@@ -330,18 +330,27 @@ async function refreshScenarios() {
 
 // ----------------------------------------------------------- call monitor --
 
-function addCall(call) {
+function addCallRow(cells, className) {
   if (state.paused) return;
   const body = $('#calls tbody');
   const row = body.insertRow(0);
-  const ok = call.end_code === '0000';
-  row.className = ok ? '' : 'error';
+  row.className = className;
+  for (const text of cells) row.insertCell().textContent = text;
+  while (body.rows.length > MAX_CALL_ROWS) body.deleteRow(-1);
+}
+
+function addCall(call) {
   const command = call.command ? `${call.command}/${call.subcommand}${call.name ? ' ' + call.name : ''}` : '—';
   const devices = call.device ? `${call.device} ×${call.points} ${call.unit}` : (call.named || '');
   const endCode = call.end_code ?? (call.reaction === 'closed' ? 'closed' : 'no answer');
-  const cells = [call.time.slice(11, 23), call.peer, command, devices, endCode, `${call.latency_us.toFixed(1)} µs`, call.note];
-  for (const text of cells) row.insertCell().textContent = text;
-  while (body.rows.length > MAX_CALL_ROWS) body.deleteRow(-1);
+  addCallRow([call.time.slice(11, 23), call.peer, command, devices, endCode, `${call.latency_us.toFixed(1)} µs`, call.note],
+    call.end_code === '0000' ? '' : 'error');
+}
+
+// An Ondemand push the CPU sent unasked (docs/timing.md): no request, no latency.
+function addPush(push) {
+  addCallRow([new Date().toISOString().slice(11, 23), `${push.transport}:${push.peer}`, '2101 Ondemand (pushed)',
+    push.why || '', '—', '', `${push.frame.length / 2} bytes sent unasked`], 'push');
 }
 
 // ---------------------------------------------------------- operating state --
@@ -382,6 +391,7 @@ function connectEvents() {
   source.onerror = () => setLive(false, 'polling (event stream lost)');
   source.addEventListener('devices', (e) => applyWrite(JSON.parse(e.data)));
   source.addEventListener('request', (e) => addCall(JSON.parse(e.data)));
+  source.addEventListener('ondemand', (e) => addPush(JSON.parse(e.data)));
   source.addEventListener('connection', () => refreshConnections());
   source.addEventListener('overflow', () => refreshAll());
 }

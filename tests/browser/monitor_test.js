@@ -310,6 +310,13 @@ async function main() {
       await eventually(async () => (await (await fetch(`${url}api/labels/Tank1.V%5B0%5D.Open`)).json()).values, [1], 'Tank1.V[0].Open over HTTP');
     });
 
+    await check('an Ondemand push (POST /api/ondemand) shows in the call monitor', async () => {
+      const answer = await (await fetch(`${url}api/ondemand`, { method: 'POST', body: JSON.stringify({ data: 'D100-D101' }) })).json();
+      if (!answer.sent || answer.sent.length !== 1) throw new Error(`expected one push, got ${JSON.stringify(answer)}`);
+      await page.waitForFunction(() => [...document.querySelectorAll('#calls tbody tr.push')].some((row) =>
+        row.textContent.includes('2101 Ondemand (pushed)') && row.textContent.includes('bytes sent unasked')));
+    });
+
     await check('the page raised no script errors', async () => {
       if (pageErrors.length) throw new Error(pageErrors.join('; '));
     });
