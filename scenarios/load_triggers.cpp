@@ -87,7 +87,7 @@ Action action(const JsonAt& at) {
     at.expect_object();
     static constexpr std::string_view kinds[] = {"set", "increment", "pulse", "switch", "error", "clear_error",
                                                  "start_fault", "stop_fault", "power_cycle", "refuse_connections", "log",
-                                                 "ondemand"};
+                                                 "ondemand", "drive"};
     std::string key;
     for (auto k : kinds)
         if (at.has(k)) {
@@ -97,7 +97,7 @@ Action action(const JsonAt& at) {
     if (key.empty())
         at.fail("no action named",
                 "use one of set, increment, pulse, switch, error, clear_error, start_fault, stop_fault, power_cycle, "
-                "refuse_connections, log, ondemand");
+                "refuse_connections, log, ondemand, drive");
     auto only = [&](std::initializer_list<std::string_view> keys) { at.only_keys(keys); };
     if (key == "set") {
         only({"set"});
@@ -149,6 +149,17 @@ Action action(const JsonAt& at) {
     if (key == "ondemand") {
         only({"ondemand"});
         return ondemand(at["ondemand"]);
+    }
+    if (key == "drive") {
+        only({"drive"});
+        auto d = at["drive"];
+        d.only_keys({"number", "present", "write_protect"});
+        DriveAction a{static_cast<std::uint16_t>(d["number"].unsigned_int(4)), {}, {}, d.pointer()};
+        if (d.has("present")) a.present = d["present"].boolean();
+        if (d.has("write_protect")) a.write_protect = d["write_protect"].boolean();
+        if (!a.present && !a.write_protect)
+            d.fail("changes nothing", "give \"present\" (the card in or out) or \"write_protect\" (its LOCK switch)");
+        return a;
     }
     only({"log"});
     return LogAction{at["log"].string()};

@@ -4,6 +4,7 @@
 
 #include "config/config.hpp"
 #include "devicemodel/drives.hpp"
+#include "devicemodel/drives.hpp"
 #include "protocol/error_response.hpp"
 #include "protocol/hex.hpp"
 #include "scenarios/bind_labels.hpp"
@@ -22,6 +23,16 @@ struct overloaded : Ts... {
 template <class... Ts>
 overloaded(Ts...) -> overloaded<Ts...>;
 
+// A "drive" action must name a drive the CPU has (its family's table, docs/files.md).
+void check_drives(const Scenario& s, const devicemodel::Cpu& cpu) {
+    for (const auto& t : s.triggers)
+        for (const auto& action : t.actions)
+            if (const auto* d = std::get_if<DriveAction>(&action); d && !cpu.drives().exists(d->number))
+                throw config::ConfigError(s.source + ": " + d->pointer + "/number: " + cpu.profile().name +
+                                          " has no drive " + std::to_string(d->number) +
+                                          "; name one of its drives (GET /api/drives lists them)");
+}
+
 std::chrono::microseconds micros(double ms) { return std::chrono::microseconds(static_cast<std::int64_t>(ms * 1000)); }
 
 }  // namespace
@@ -32,6 +43,7 @@ ScenarioRunner::ScenarioRunner(std::vector<Scenario> scenarios, devicemodel::Cpu
     for (auto& s : scenarios_) {
         bind_labels(s, cpu_.labels());
         check_devices(s, cpu_.memory(), cpu_.profile().name);
+        check_drives(s, cpu_);
         timelines_.push_back(std::make_unique<TimelineRunner>(s.timeline, s.seed, station_));
         logic_.push_back(std::make_unique<LogicRunner>(s.logic));
         for (const auto& t : s.triggers) triggers_.add(t);
@@ -206,6 +218,14 @@ void ScenarioRunner::run(const Trigger& trigger) {
                        [&](const PowerCycleAction& a) { power_cycle(a.off_ms, "trigger " + name); },
                        [&](const OndemandAction& a) {
                            if (station_) station_->ondemand(a, "trigger " + name);
+                       },
+                       [&](const DriveAction& a) {
+                           auto& drives = cpu_.drives();
+                           if (a.present) drives.set_present(a.number, *a.present);
+                           if (a.write_protect) drives.set_write_protect(a.number, *a.write_protect);
+                           info("drive " + std::to_string(a.number) +
+                                (a.present ? (*a.present ? ": card inserted" : ": card removed") : "") +
+                                (a.write_protect ? (*a.write_protect ? ": LOCK on" : ": LOCK off") : ""));
                        },
                        [&](const RefuseAction& a) { refuse(a.for_ms, "trigger " + name); },
                        [&](const LogAction& a) { info(a.text); },

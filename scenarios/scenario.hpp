@@ -184,9 +184,17 @@ struct FaultSwitchAction { std::string fault; bool enable = true; };
 struct PowerCycleAction { double off_ms = 1000; };
 struct RefuseAction { double for_ms = 1000; };
 struct LogAction { std::string text; };
+// {"drive": {"number": 2, "present": false}}: the SD card taken out (or put
+// back), its LOCK switch moved (docs/files.md).
+struct DriveAction {
+    std::uint16_t number = 0;
+    std::optional<bool> present;
+    std::optional<bool> write_protect;
+    std::string pointer;   // for the start-up check that the drive exists
+};
 
 using Action = std::variant<SetAction, IncrementAction, PulseAction, SwitchAction, ErrorAction, ClearErrorAction,
-                            FaultSwitchAction, PowerCycleAction, RefuseAction, LogAction, OndemandAction>;
+                            FaultSwitchAction, PowerCycleAction, RefuseAction, LogAction, OndemandAction, DriveAction>;
 
 // "D100-D109" (or one device "D100") and a target, as an Ondemand's data;
 // nullopt with `error` set when the text names no device range.

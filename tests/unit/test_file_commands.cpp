@@ -4,6 +4,7 @@
 // End codes are the choices in docs/end-codes.md.
 #include "devicemodel/drives.hpp"
 #include "support/fixtures.hpp"
+#include "support/scenario_fixtures.hpp"
 
 using namespace slmp;
 using namespace slmp::test;
@@ -402,4 +403,23 @@ TEST_CASE("the outcome names the file a request carried, for the call monitor an
                         "181100400000000400000008004C0049004E0045002E004300530056");
         CHECK(run(r, w.request(search)).named == "4:LINE.CSV");
     }
+}
+
+TEST_CASE("a scenario trigger takes the SD card out at t = 5 s and moves its LOCK switch", "[files][scenario]") {
+    ScenarioRig rig(R"({"triggers": [
+        {"when": {"at_ms": 5000}, "do": [{"drive": {"number": 2, "present": false}}]},
+        {"when": {"at_ms": 6000}, "do": [{"drive": {"number": 2, "present": true, "write_protect": true}}]}]})");
+    const FileRef log{2, "LOG.CSV"};
+    REQUIRE(rig.cpu.drives().create(log, NameForm::Long, 4) == FileFault::None);
+    rig.scan(0);
+    rig.scan(4990);
+    const std::vector<std::uint8_t> data{1, 2, 3, 4};
+    CHECK(rig.cpu.drives().host_write(log, data) == FileFault::None);
+    rig.scan(5000);
+    CHECK(rig.cpu.drives().create({2, "B.CSV"}, NameForm::Long, 4) == FileFault::NoDrive);   // no card
+    rig.scan(6000);
+    CHECK(rig.cpu.drives().create({2, "B.CSV"}, NameForm::Long, 4) == FileFault::WriteProtected);
+    CHECK_THROWS_WITH(ScenarioRig(R"({"triggers": [{"when": {"at_ms": 0}, "do": [{"drive": {"number": 0, "present": false}}]}]})"),
+                      "test.json: /triggers/0/do/0/drive/number: R08CPU has no drive 0; name one of its drives (GET "
+                      "/api/drives lists them)");
 }
