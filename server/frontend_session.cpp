@@ -104,13 +104,7 @@ awaitable<void> FrontEndSession::watch_deadlines() {
     auto self = shared_from_this();
     using clock = std::chrono::steady_clock;
     while (!closed_) {
-        auto deadline = clock::time_point::max();
-        bool partial = false;
-        if (idle_timeout_.count() > 0) deadline = last_activity_ + idle_timeout_;
-        if (partial_timeout_.count() > 0 && partial_since_ && *partial_since_ + partial_timeout_ < deadline) {
-            deadline = *partial_since_ + partial_timeout_;
-            partial = true;
-        }
+        const auto [deadline, partial] = next_deadline(last_activity_, idle_timeout_, partial_since_, partial_timeout_);
         if (clock::now() >= deadline) {
             close_reason_ = partial ? "a started record was not whole " + std::to_string(partial_timeout_.count()) +
                                           " ms after its first byte (partial-frame timeout)"

@@ -4,7 +4,9 @@
 // per-address cap and its power-cut refusals the same for all of them.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
+#include <optional>
 #include <functional>
 #include <memory>
 
@@ -37,6 +39,22 @@ inline protocol::Peer accepted_peer(boost::asio::ip::tcp::socket& socket) {
     peer.local_port = socket.local_endpoint(ec).port();
     socket.set_option(boost::asio::ip::tcp::no_delay(true), ec);
     return peer;
+}
+
+// When a connection's watchdog fires: `idle` after its last activity, or
+// `partial` after the first byte of a request still not whole, whichever is
+// first (a zero duration is off). `partial` in the answer says which one.
+struct Deadline {
+    std::chrono::steady_clock::time_point at = std::chrono::steady_clock::time_point::max();
+    bool partial = false;
+};
+inline Deadline next_deadline(std::chrono::steady_clock::time_point last_activity, std::chrono::milliseconds idle,
+                              std::optional<std::chrono::steady_clock::time_point> partial_since,
+                              std::chrono::milliseconds partial) {
+    Deadline d;
+    if (idle.count() > 0) d.at = last_activity + idle;
+    if (partial.count() > 0 && partial_since && *partial_since + partial < d.at) d = {*partial_since + partial, true};
+    return d;
 }
 
 // Builds the session for an accepted socket. `on_closed` must be called once

@@ -194,13 +194,8 @@ awaitable<void> TcpSession::watch_deadlines() {
     auto self = shared_from_this();
     using clock = std::chrono::steady_clock;
     while (!closed_) {
-        auto deadline = clock::time_point::max();
-        bool partial = false;
-        if (idle_timeout_.count() > 0) deadline = last_activity_ + idle_timeout_;
-        if (partial_frame_timeout_.count() > 0 && partial_since_ && *partial_since_ + partial_frame_timeout_ < deadline) {
-            deadline = *partial_since_ + partial_frame_timeout_;
-            partial = true;
-        }
+        const auto [deadline, partial] =
+            next_deadline(last_activity_, idle_timeout_, partial_since_, partial_frame_timeout_);
         if (clock::now() >= deadline) {
             if (partial) {
                 close_reason_ = "a started frame was not whole " + std::to_string(partial_frame_timeout_.count()) +
