@@ -165,6 +165,7 @@ struct DriveConfig {
 };
 
 struct ServerConfig {
+    std::string name;                      // the station's name in a plant (docs/plants.md); empty: one station
     std::string profile = "R08CPU";
     std::string bind = "0.0.0.0";
     std::vector<PortConfig> ports = {{Transport::Tcp, 5000}, {Transport::Udp, 5000}};
@@ -179,7 +180,7 @@ struct ServerConfig {
     std::vector<CpuConfig> cpus;           // CPU No.2–4
     CpuRuntimeConfig cpu;                  // CPU No.1's runtime parameters
     PersistenceConfig persistence;
-    std::vector<std::string> scenarios;    // --scenario files, run together (docs/scenarios.md)
+    std::vector<std::string> scenarios;    // "scenarios" and --scenario files, run together (docs/scenarios.md)
     std::string record_file;               // --record: every request and response as JSON lines
     std::string record_pcap_file;          // --record-pcap: the same as a pcap capture for Wireshark
     double clock_speed = 1;                // the CPU's clock runs this many times faster than the host's
@@ -195,6 +196,8 @@ inline constexpr const char* kClockSpeedFix = "use a factor from 0.01 to 1000 (d
 // Reads a configuration file; keys left out keep the defaults above.
 ServerConfig load_server_config(const std::filesystem::path& file);
 ServerConfig parse_server_config(const std::string& json_text, const std::string& source);
+// The whole file as text; throws ConfigError naming the path when it cannot be read.
+std::string read_config_file(const std::filesystem::path& file);
 
 // A --labels file: JSON with "labels" and/or "structures" (like the
 // configuration's sections), or a CSV global-label list (name ends in .csv).

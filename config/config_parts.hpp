@@ -25,6 +25,12 @@ std::string builtin_profile_list();
 // The profile's JSON with its "extends" chain resolved (profile_inheritance.cpp).
 nlohmann::json resolve_profile_json(const std::string& json_text, const ProfileSource& source);
 
+// One station's keys (docs/configuration.md); `directory` resolves relative
+// "scenarios" and label CSV names. A plant gives each station its merged keys.
+ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path& directory);
+// A station's "name": 1-64 of [A-Za-z0-9._-], as URLs and metrics labels take it.
+std::string checked_station_name(const JsonAt& at);
+
 std::vector<std::pair<devicemodel::Area, std::uint32_t>> parse_device_sizes(const JsonAt& sizes);
 std::vector<InitialValue> parse_initial_values(const JsonAt& devices);
 // One entry of such an object: "D100": 5 (also used by scenarios' "set", which

@@ -128,7 +128,10 @@ std::string_view kind_name(StationKind kind) {
 
 FrontEndsConfig parse_frontends_config(const std::string& json_text, const std::string& source) {
     auto json = parse_json(json_text, source);
-    JsonAt root(json, source);
+    return parse_frontends_config(JsonAt(json, source));
+}
+
+FrontEndsConfig parse_frontends_config(const JsonAt& root) {
     FrontEndsConfig c;
     if (root.has("kind")) {
         auto kind = root["kind"].string();
@@ -161,11 +164,7 @@ FrontEndsConfig parse_frontends_config(const std::string& json_text, const std::
 }
 
 FrontEndsConfig load_frontends_config(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    if (!in) throw ConfigError(file.string() + ": cannot open the configuration file; check the path given to --config");
-    std::stringstream text;
-    text << in.rdbuf();
-    return parse_frontends_config(text.str(), file.string());
+    return parse_frontends_config(read_config_file(file), file.string());
 }
 
 }  // namespace slmp::config

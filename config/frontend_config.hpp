@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "config/config.hpp"
+#include "config/json_path.hpp"
 #include "frontends/hostlink/host_link.hpp"
 #include "frontends/jw51cm/computer_link.hpp"
 
@@ -50,6 +51,7 @@ struct FrontEndsConfig {
 // The "kind", "hostlink" and "jw51cm" keys of a configuration file (the rest
 // is parse_server_config's). Throws ConfigError naming the key and the fix.
 FrontEndsConfig parse_frontends_config(const std::string& json_text, const std::string& source);
+FrontEndsConfig parse_frontends_config(const JsonAt& root);
 FrontEndsConfig load_frontends_config(const std::filesystem::path& file);
 
 }  // namespace slmp::config

@@ -1,4 +1,5 @@
 // The server configuration file. Keys and defaults: docs/configuration.md.
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -135,13 +136,13 @@ DataCode parse_data_code(const std::string& text, const std::string& where) {
     throw ConfigError(where + ": unknown data code '" + text + "'; use binary, ascii or auto");
 }
 
-ServerConfig parse_server_config(const std::string& json_text, const std::string& source) {
-    auto json = parse_json(json_text, source);
-    JsonAt root(json, source);
-    root.only_keys({"profile", "bind", "ports", "max_request_bytes", "device_sizes", "devices", "log_level", "modules",
-                    "networks", "cpus", "http", "cpu", "state_dir", "snapshot_interval_s", "restore",
-                    "clock_speed", "labels", "structures", "drives", "timing", "kind", "hostlink", "jw51cm"});   // the last three: parse_frontends_config
+ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path& directory) {
+    root.only_keys({"name", "profile", "bind", "ports", "tcp_port", "udp_port", "max_request_bytes", "device_sizes",
+                    "devices", "log_level", "modules", "networks", "cpus", "http", "cpu", "state_dir",
+                    "snapshot_interval_s", "restore", "clock_speed", "labels", "structures", "drives", "timing",
+                    "scenarios", "kind", "hostlink", "jw51cm"});   // the last three: parse_frontends_config
     ServerConfig c;
+    if (root.has("name")) c.name = checked_station_name(root["name"]);
     if (root.has("profile")) c.profile = root["profile"].string();
     if (root.has("bind")) c.bind = root["bind"].string();
     if (root.has("ports")) {
@@ -149,6 +150,17 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
         ports.expect_array();
         c.ports.clear();
         for (std::size_t i = 0; i < ports.json().size(); ++i) c.ports.push_back(port(ports[i]));
+    }
+    // The short form of "ports": only the port numbers; a transport left out is not served.
+    if (root.has("tcp_port") || root.has("udp_port")) {
+        if (root.has("ports"))
+            root["ports"].fail("\"ports\" and \"tcp_port\"/\"udp_port\" both given",
+                               "give one: \"ports\" for every port setting, or tcp_port/udp_port for the numbers");
+        c.ports.clear();
+        if (root.has("tcp_port"))
+            c.ports.push_back({Transport::Tcp, static_cast<std::uint16_t>(root["tcp_port"].unsigned_int(65535))});
+        if (root.has("udp_port"))
+            c.ports.push_back({Transport::Udp, static_cast<std::uint16_t>(root["udp_port"].unsigned_int(65535))});
     }
     if (root.has("max_request_bytes")) {
         c.max_request_bytes = root["max_request_bytes"].unsigned_int(1 << 20);
@@ -163,19 +175,47 @@ ServerConfig parse_server_config(const std::string& json_text, const std::string
     }
     if (root.has("http")) c.http = http_config(root["http"]);
     if (root.has("timing")) c.timing = parse_timing_config(root["timing"]);
+    if (root.has("scenarios")) {
+        auto list = root["scenarios"];
+        list.expect_array();
+        for (std::size_t i = 0; i < list.json().size(); ++i) {
+            std::filesystem::path file(list[i].string());
+            c.scenarios.push_back((file.is_relative() ? directory / file : file).string());
+        }
+    }
     parse_hardware(root, c);
     parse_drives(root, c);
     parse_cpu_runtime(root, c);
-    parse_labels(root, std::filesystem::path(source).parent_path(), c.labels);
+    parse_labels(root, directory, c.labels);
     return c;
 }
 
-ServerConfig load_server_config(const std::filesystem::path& file) {
+ServerConfig parse_server_config(const std::string& json_text, const std::string& source) {
+    auto json = parse_json(json_text, source);
+    return parse_server_config(JsonAt(json, source), std::filesystem::path(source).parent_path());
+}
+
+std::string read_config_file(const std::filesystem::path& file) {
     std::ifstream in(file);
     if (!in) throw ConfigError(file.string() + ": cannot open the configuration file; check the path given to --config");
     std::stringstream text;
     text << in.rdbuf();
-    return parse_server_config(text.str(), file.string());
+    return text.str();
+}
+
+ServerConfig load_server_config(const std::filesystem::path& file) {
+    return parse_server_config(read_config_file(file), file.string());
+}
+
+std::string checked_station_name(const JsonAt& at) {
+    auto name = at.string();
+    bool ok = !name.empty() && name.size() <= 64;
+    for (char ch : name)
+        ok = ok && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '_' || ch == '.');
+    if (!ok)
+        at.fail("station name '" + name + "' is not usable in URLs and metrics labels",
+                "use 1-64 letters, digits, '-', '_' or '.', e.g. \"press-7\"");
+    return name;
 }
 
 Profile resolve_profile(const ServerConfig& config) {

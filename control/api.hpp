@@ -52,6 +52,9 @@ void add_ondemand_endpoint(Router& router, Api& api);      // /api/ondemand
 void add_state_endpoints(Router& router, Api& api);        // /api/state
 void add_event_endpoint(Router& router, Api& api);         // /api/events
 void add_metrics_endpoint(Router& router, Api& api);       // /metrics
-void add_static_pages(Router& router);                     // / and its scripts and styles
+void add_static_pages(Router& router);
+
+// "RUN", "STOP", "PAUSE" (state_endpoints.cpp).
+std::string_view run_state_name(devicemodel::RunState state);                     // / and its scripts and styles
 
 }  // namespace slmp::control

@@ -31,14 +31,9 @@ void common_fields(bhttp::response<Body>& response) {
 
 }  // namespace
 
-HttpServer::HttpServer(asio::io_context& io, station::Station& station, const config::HttpConfig& config,
-                       const asio::ip::address& bind, PortList ports)
-    : io_(io),
-      metrics_(station),
-      events_(io, station),
-      waits_(io, events_),
-      api_{station, events_, metrics_, waits_, std::move(ports), std::chrono::system_clock::now()},
-      acceptor_(io) {
+HttpServer::HttpServer(asio::io_context& io, const std::vector<ServedStation>& stations,
+                       const config::HttpConfig& config, const asio::ip::address& bind, bool named)
+    : io_(io), acceptor_(io) {
     tcp::endpoint endpoint(bind, config.port);
     try {
         acceptor_.open(endpoint.protocol());
@@ -51,25 +46,10 @@ HttpServer::HttpServer(asio::io_context& io, station::Station& station, const co
                                   "the HTTP API off (--no-http)");
     }
     port_ = acceptor_.local_endpoint().port();
-    api_.ports.http = port_;
-
-    add_device_endpoints(router_, api_);
-    add_wait_endpoints(router_, api_);
-    add_snapshot_endpoints(router_, api_);
-    add_clock_endpoints(router_, api_);
-    add_buffer_endpoints(router_, api_);
-    add_file_endpoints(router_, api_);
-    add_label_endpoints(router_, api_);
-    add_scenario_endpoints(router_, api_);
-    add_fault_endpoints(router_, api_);
-    add_recording_endpoints(router_, api_);
-    add_connection_endpoints(router_, api_);
-    add_info_endpoint(router_, api_);
-    add_ondemand_endpoint(router_, api_);
-    add_state_endpoints(router_, api_);
-    add_event_endpoint(router_, api_);
-    add_metrics_endpoint(router_, api_);
-    add_static_pages(router_);
+    plant_.named = named;
+    for (const auto& served : stations) plant_.stations.push_back(std::make_unique<StationSide>(served, port_));
+    add_plant_endpoints(plant_router_, plant_);
+    add_static_pages(plant_router_);
 
     asio::co_spawn(io_, accept_loop(), station::log_exception("HTTP port " + std::to_string(port_) + ": accept loop failed"));
 }
@@ -77,10 +57,54 @@ HttpServer::HttpServer(asio::io_context& io, station::Station& station, const co
 void HttpServer::stop() {
     boost::system::error_code ec;
     acceptor_.close(ec);
-    waits_.close_all();
-    events_.close_all();
-    for (auto* socket : sockets_) socket->close(ec);
+    // Waits and event streams end on their stations' threads; the sockets
+    // they hold are closed by the connections themselves when they end.
+    for (auto& side : plant_.stations)
+        asio::post(side->home, [s = side.get()] {
+            s->waits.close_all();
+            s->events.close_all();
+        });
+    for (auto* socket : sockets_)
+        if (!lent_.contains(socket)) socket->close(ec);
 }
+
+StationSide* HttpServer::station_for(std::string_view target, std::string* station_target, Reply* error) {
+    constexpr std::string_view kPrefix = "/api/stations/";
+    if (target.substr(0, kPrefix.size()) != kPrefix) {
+        *station_target = std::string(target);
+        return plant_.stations.front().get();
+    }
+    auto rest = target.substr(kPrefix.size());
+    auto slash = rest.find_first_of("/?");
+    std::string name;
+    if (!percent_decode(rest.substr(0, slash), false, &name)) name.clear();
+    auto* side = plant_.find(name);
+    if (!side) {
+        *error = error_reply(Status::not_found, "no station '" + name + "'; GET /api/stations lists them");
+        return nullptr;
+    }
+    auto inner = slash == std::string_view::npos ? std::string_view() : rest.substr(slash + 1);
+    // /api/stations/{name}/metrics is the station's /metrics; the rest are its /api/... routes.
+    *station_target = (inner.substr(0, 7) == "metrics" ? "/" : "/api/") + std::string(inner);
+    return side;
+}
+
+namespace {
+
+// A station's request on its own thread: its route, a wait's deferred answer,
+// or the event stream that then owns the connection (event_types stays set).
+asio::awaitable<Reply> station_request(StationSide& side, bhttp::verb method, std::string target, std::string body,
+                                       tcp::socket& socket) {
+    auto reply = side.router.route(method, target, std::move(body));
+    if (reply.deferred) {
+        auto later = std::move(reply.deferred);
+        reply = co_await later();
+    }
+    if (reply.event_types != 0) co_await stream_events(socket, side.events, reply.event_types);
+    co_return reply;
+}
+
+}  // namespace
 
 asio::awaitable<void> HttpServer::accept_loop() {
     while (acceptor_.is_open()) {
@@ -130,22 +154,36 @@ asio::awaitable<void> HttpServer::serve(tcp::socket socket) {
             auto& request = parser.get();
             version = request.version();
             keep_alive = request.keep_alive();
-            auto target = request.target();
-            reply = router_.route(request.method(), std::string_view(target.data(), target.size()), std::move(request.body()));
+            auto target_view = request.target();
+            std::string_view target(target_view.data(), target_view.size());
+            std::string station_target;
+            StationSide* side = nullptr;
+            if (plant_router_.serves(target)) reply = plant_router_.route(request.method(), target, std::move(request.body()));
+            else side = station_for(target, &station_target, &reply);
+            if (side) {
+                stream.expires_never();   // a wait and an event stream have their own timeouts
+                lent_.insert(registered);
+                if (&side->home == &io_) {
+                    reply = co_await station_request(*side, request.method(), std::move(station_target),
+                                                     std::move(request.body()), stream.socket());
+                } else {
+                    reply = co_await asio::co_spawn(side->home,
+                                                    station_request(*side, request.method(), std::move(station_target),
+                                                                    std::move(request.body()), stream.socket()),
+                                                    asio::use_awaitable);
+                }
+                lent_.erase(registered);
+            }
             spdlog::debug("HTTP {} {} -> {}", std::string(request.method_string()), std::string(request.target()),
                           static_cast<unsigned>(reply.status));
         }
 
-        if (reply.deferred) {
-            stream.expires_never();   // a wait has its own timeout
+        if (reply.deferred) {   // the plant's own routes: they visit the stations in turn
+            stream.expires_never();
             auto later = std::move(reply.deferred);
             reply = co_await later();
         }
-        if (reply.event_types != 0) {
-            stream.expires_never();
-            co_await stream_events(stream.socket(), events_, reply.event_types);
-            break;
-        }
+        if (reply.event_types != 0) break;   // the event stream has ended
 
         bhttp::response<bhttp::string_body> response{reply.status, version};
         common_fields(response);

@@ -1,6 +1,8 @@
 // The HTTP side of slmp-sim: JSON control API, /metrics, /api/events and the
-// web monitor, on its own port but on the SLMP listeners' io_context thread,
-// so an API write is atomic with respect to SLMP requests.
+// web monitor, on its own port. Each request for a station runs on that
+// station's thread (StationSide, on_station), so an API write is atomic with
+// respect to SLMP requests. "/api/stations/{name}/..." reaches a station of a
+// plant; the routes without it mean the first (or only) station.
 #pragma once
 
 #include <cstdint>
@@ -10,38 +12,36 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
-#include "control/api.hpp"
-#include "control/device_waits.hpp"
-#include "control/event_hub.hpp"
-#include "control/metrics.hpp"
-#include "control/router.hpp"
-#include "station/station.hpp"
+#include "control/station_side.hpp"
 
 namespace slmp::control {
 
 class HttpServer {
 public:
-    // Binds the port (throws config::ConfigError naming the fix when it cannot);
-    // `ports` lists the SLMP ports for /api/info.
-    HttpServer(boost::asio::io_context& io, station::Station& station, const config::HttpConfig& config,
-               const boost::asio::ip::address& bind, PortList ports);
+    // Binds the port (throws config::ConfigError naming the fix when it cannot)
+    // and serves on `io`. `named`: a plant (routes, lists and metrics by name).
+    HttpServer(boost::asio::io_context& io, const std::vector<ServedStation>& stations, const config::HttpConfig& config,
+               const boost::asio::ip::address& bind, bool named);
 
     std::uint16_t port() const { return port_; }
+    // Every station is listening: GET /readyz answers 200.
+    void set_ready() { plant_.ready = true; }
     void stop();
 
 private:
     boost::asio::awaitable<void> accept_loop();
     boost::asio::awaitable<void> serve(boost::asio::ip::tcp::socket socket);
+    // The station a request is for and the target its Router sees, or null
+    // for the plant's own routes (and 404s).
+    StationSide* station_for(std::string_view target, std::string* station_target, Reply* error);
 
     boost::asio::io_context& io_;
-    Metrics metrics_;
-    EventHub events_;
-    DeviceWaits waits_;
-    Api api_;
-    Router router_;
+    Plant plant_;
+    Router plant_router_;   // /healthz, /readyz, /api/stations[/{name}], a plant's /metrics
     boost::asio::ip::tcp::acceptor acceptor_;
     std::uint16_t port_ = 0;
     std::unordered_set<boost::asio::ip::tcp::socket*> sockets_;   // open connections, closed by stop()
+    std::unordered_set<boost::asio::ip::tcp::socket*> lent_;      // streaming on a station's thread now
 };
 
 }  // namespace slmp::control

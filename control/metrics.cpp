@@ -82,6 +82,19 @@ void Metrics::on_request(const station::RequestRecord& record) {
     }
 }
 
+Metrics::Totals Metrics::totals() const {
+    Totals totals;
+    for (const auto& [key, count] : requests_) {
+        totals.requests += count;
+        if (std::get<3>(key) != 0) totals.errors += count;
+    }
+    for (const auto& t : transports_) {
+        totals.requests += t.unparsed;
+        totals.errors += t.unparsed;
+    }
+    return totals;
+}
+
 void Metrics::on_opened(const station::Connection&) { ++accepted_; }
 void Metrics::on_closed(const station::Connection&, std::string_view) { ++closed_; }
 

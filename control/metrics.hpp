@@ -31,6 +31,14 @@ public:
 
     std::string render() const;
 
+    // For the plant overview: requests handled, and of those the ones not
+    // answered 0000 (error end codes, no answer, closed, unparsed frames).
+    struct Totals {
+        std::uint64_t requests = 0;
+        std::uint64_t errors = 0;
+    };
+    Totals totals() const;
+
 private:
     // transport, command, subcommand, reaction (end code 0x0000-0xFFFF; kNoAnswer; kClosed)
     using RequestKey = std::tuple<std::uint8_t, std::uint16_t, std::uint16_t, std::uint32_t>;

@@ -77,6 +77,13 @@ bool Router::match(const Route& route, const std::vector<std::string>& segments,
     return true;
 }
 
+bool Router::serves(std::string_view target) const {
+    auto segments = segments_of(target.substr(0, target.find('?')));
+    std::vector<std::string> captures;
+    return std::any_of(routes_.begin(), routes_.end(),
+                       [&](const Route& route) { return match(route, segments, &captures); });
+}
+
 Reply Router::route(Verb method, std::string_view target, std::string body) const {
     auto question = target.find('?');
     auto raw_path = target.substr(0, question);

@@ -38,6 +38,8 @@ public:
     // `target` is the request-target as received ("/api/devices/D100?count=3").
     // Exceptions of type ApiError become error replies.
     Reply route(Verb method, std::string_view target, std::string body) const;
+    // True when a route has the target's path, with any method.
+    bool serves(std::string_view target) const;
 
 private:
     struct Route {

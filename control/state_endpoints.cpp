@@ -16,9 +16,7 @@ using devicemodel::RunSwitch;
 using devicemodel::StopCause;
 using nlohmann::json;
 
-namespace {
-
-std::string_view state_name(RunState state) {
+std::string_view run_state_name(RunState state) {
     switch (state) {
         case RunState::Run: return "RUN";
         case RunState::Stop: return "STOP";
@@ -26,6 +24,8 @@ std::string_view state_name(RunState state) {
     }
     return "?";
 }
+
+namespace {
 
 std::string_view cause_name(StopCause cause) {
     switch (cause) {
@@ -38,7 +38,7 @@ std::string_view cause_name(StopCause cause) {
 
 json state_json(const devicemodel::Runtime& runtime) {
     const auto& s = runtime.operating_state();
-    json out{{"state", state_name(s.state())},
+    json out{{"state", run_state_name(s.state())},
              {"switch", s.run_switch() == RunSwitch::Run ? "RUN" : "STOP"},
              {"cause", s.state() == RunState::Run ? json(nullptr) : json(cause_name(s.cause()))},
              {"remote_hold", nullptr},

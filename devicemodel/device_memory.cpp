@@ -23,14 +23,15 @@ DeviceMemory::DeviceMemory(const DeviceSizes& sizes, std::uint32_t slack_words)
         auto& s = stores_[i];
         if (area == Area::R) continue;  // lives in ZR
         if (area == Area::ZR) points = std::max(points, sizes[static_cast<std::size_t>(Area::R)]) + slack_words;
+        // resize, not assign: calloc's pages are zero already (ZeroPages).
         if (is_bit_area(area)) {
-            s.bits.assign(points, 0);
+            s.bits.resize(points);
         } else if (is_timer_or_counter(area)) {
-            s.bits.assign(points, 0);
-            s.coils.assign(points, 0);
-            s.values.assign(points, 0);
+            s.bits.resize(points);
+            s.coils.resize(points);
+            s.values.resize(points);
         } else {
-            s.values.assign(points, 0);
+            s.values.resize(points);
         }
     }
 }

@@ -4,7 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
+#include <new>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "devicemodel/cpu_profile.hpp"
@@ -85,10 +88,35 @@ public:
     }
 
 private:
+    // Device memory only costs RAM where it is used (docs/plants.md, "Memory"):
+    // stores come from calloc, whose large blocks are fresh zero pages the
+    // kernel maps on first write, and resize() default-initialises (writes
+    // nothing) instead of writing zeros over every page.
+    template <class T>
+    struct ZeroPages {
+        using value_type = T;
+        ZeroPages() = default;
+        template <class U>
+        ZeroPages(const ZeroPages<U>&) {}
+        T* allocate(std::size_t n) {
+            if (auto* p = static_cast<T*>(std::calloc(n, sizeof(T)))) return p;
+            throw std::bad_alloc();
+        }
+        void deallocate(T* p, std::size_t) { std::free(p); }
+        template <class U>
+        void construct(U* p) { ::new (static_cast<void*>(p)) U; }
+        template <class U, class... Args>
+        void construct(U* p, Args&&... args) { ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...); }
+        template <class U>
+        bool operator==(const ZeroPages<U>&) const { return true; }
+    };
+    template <class T>
+    using Pages = std::vector<T, ZeroPages<T>>;
+
     struct Store {
-        std::vector<std::uint8_t> bits;      // plain bit areas; contacts of T/C areas
-        std::vector<std::uint8_t> coils;     // T/C areas only
-        std::vector<std::uint32_t> values;   // word areas (low 16 bits), LZ, T/C current values
+        Pages<std::uint8_t> bits;      // plain bit areas; contacts of T/C areas
+        Pages<std::uint8_t> coils;     // T/C areas only
+        Pages<std::uint32_t> values;   // word areas (low 16 bits), LZ, T/C current values
         bool operator==(const Store&) const = default;
     };
     Store& store(Area area);

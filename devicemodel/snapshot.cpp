@@ -73,12 +73,21 @@ private:
     std::size_t pos_ = 0;
 };
 
+// How many values from `from` are zero: 64 at a time with memcmp (vectorised)
+// while it can, as most of a station's memory is.
+std::size_t zeros_from(std::span<const std::uint32_t> values, std::size_t from) {
+    static constexpr std::uint32_t kZeroBlock[64] = {};
+    std::size_t i = from;
+    while (i + 64 <= values.size() && std::memcmp(values.data() + i, kZeroBlock, sizeof kZeroBlock) == 0) i += 64;
+    while (i < values.size() && values[i] == 0) ++i;
+    return i - from;
+}
+
 // Zero runs and literal runs: device memory is mostly zeros.
-void write_values(Writer& w, const std::vector<std::uint32_t>& values) {
+void write_values(Writer& w, std::span<const std::uint32_t> values) {
     std::size_t i = 0;
     while (i < values.size()) {
-        std::size_t zeros = 0;
-        while (i + zeros < values.size() && values[i + zeros] == 0) ++zeros;
+        std::size_t zeros = zeros_from(values, i);
         std::size_t literals = 0;
         while (i + zeros + literals < values.size() && values[i + zeros + literals] != 0) ++literals;
         w.u32(static_cast<std::uint32_t>(zeros));
@@ -136,7 +145,11 @@ std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::strin
         w.u8(static_cast<std::uint8_t>(parts.size()));
         for (const auto* part : parts) {
             w.u8(static_cast<std::uint8_t>(part->part));
-            std::vector<std::uint32_t> values(size);
+            // One buffer a thread, reused: a fresh vector per area would cost
+            // its pages again for every station of a plant (docs/plants.md).
+            thread_local std::vector<std::uint32_t> buffer;
+            if (buffer.size() < size) buffer.resize(size);
+            std::span<std::uint32_t> values(buffer.data(), size);
             memory.read_part(*part, values);
             write_values(w, values);
         }

@@ -19,8 +19,9 @@ public:
 
 }  // namespace
 
-void check_configuration(const config::ServerConfig& config, const config::FrontEndsConfig& frontends) {
-    auto checked = config;
+static void check_station(const config::StationConfig& station_config) {
+    const auto& frontends = station_config.frontends;
+    auto checked = station_config.server;
     // What would touch disk is left out: the state directory would be created,
     // recordings truncated. Their paths are checked when the simulator starts.
     checked.persistence.state_dir.clear();
@@ -36,6 +37,15 @@ void check_configuration(const config::ServerConfig& config, const config::Front
     if (frontends.jw51cm.enabled) {
         jw51cm::ComputerLink link(station.cpu(), *frontends.jw51cm.options);
         if (auto problem = link.map().check(station.cpu().memory()); !problem.empty()) throw config::ConfigError(problem);
+    }
+}
+
+void check_configuration(const config::StationConfig& station_config) {
+    try {
+        check_station(station_config);
+    } catch (const config::ConfigError& e) {
+        if (station_config.server.name.empty()) throw;
+        throw config::ConfigError("station '" + station_config.server.name + "': " + e.what());
     }
 }
 

@@ -4,14 +4,14 @@
 #pragma once
 
 #include "config/config.hpp"
-#include "config/frontend_config.hpp"
+#include "config/plant_config.hpp"
 
 namespace slmp::server {
 
 // Builds the station as a start would (profile, device sizes and initial
 // values, modules, CPU No.2-4, "cpu" parameters, scenarios checked against
 // the CPU, --snapshot read) and throws config::ConfigError with the same
-// one-line message a start would give.
-void check_configuration(const config::ServerConfig& config, const config::FrontEndsConfig& frontends = {});
+// one-line message a start would give (in a plant: "station 'NAME': ...").
+void check_configuration(const config::StationConfig& station);
 
 }  // namespace slmp::server

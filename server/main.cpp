@@ -1,6 +1,8 @@
 // slmp-sim: a MELSEC CPU that answers SLMP over TCP and UDP.
 // Exit codes: 0 clean shutdown, 2 bad options/configuration or a port that
 // cannot be had (one line on stderr that names the problem and the fix).
+#include <malloc.h>
+
 #include <iostream>
 
 #include <spdlog/spdlog.h>
@@ -22,17 +24,21 @@ spdlog::level::level_enum log_level(const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Device stores of 128 KiB and more come from mmap, as fresh zero pages
+    // that cost RAM only once written (docs/plants.md, "Memory"); a fixed
+    // threshold keeps glibc from raising it after the first large free.
+    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
     try {
         auto cl = slmp::server::parse_command_line(argc, argv);
         if (cl.exit_now) return 0;
-        spdlog::set_level(log_level(cl.config.log_level));
+        spdlog::set_level(log_level(cl.plant.stations.front().server.log_level));
         if (cl.check_only) {
-            slmp::server::check_configuration(cl.config, cl.frontends);
+            for (const auto& station : cl.plant.stations) slmp::server::check_configuration(station);
             std::cout << "slmp-sim: configuration OK\n";
             return 0;
         }
         spdlog::set_pattern("%Y-%m-%d %H:%M:%S.%e %^%-5l%$ %v");
-        slmp::server::Server server(cl.config, cl.frontends);
+        slmp::server::Server server(cl.plant);
         server.run();
         return 0;
     } catch (const slmp::config::ConfigError& e) {

@@ -2,6 +2,7 @@
 
 #include "config/drive_config.hpp"
 
+#include <filesystem>
 #include <iostream>
 #include <vector>
 
@@ -21,6 +22,11 @@ constexpr const char* kVersion = "slmp-sim 0.1.0";
 
 // Replaces the configured ports of one transport with the ones given on the
 // command line; the other transport keeps its ports.
+// Options that name one station's ports, files or identity: refused with a plant.
+constexpr const char* kOneStationOptions[] = {"profile", "bind", "tcp-port", "udp-port", "drive", "labels", "snapshot",
+                                              "record", "record-pcap", "hostlink-port", "serial", "network-no",
+                                              "station-no"};
+
 void replace_ports(config::ServerConfig& c, Transport transport, const std::vector<unsigned>& ports,
                    const char* option) {
     std::erase_if(c.ports, [&](const PortConfig& p) { return p.transport == transport; });
@@ -28,6 +34,122 @@ void replace_ports(config::ServerConfig& c, Transport transport, const std::vect
         if (port > 65535) throw ConfigError(std::string("--") + option + " " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
         c.ports.push_back(PortConfig{transport, static_cast<std::uint16_t>(port)});
     }
+}
+
+// The options that set every station (or the only one): behaviour, limits,
+// the clock, logs, HTTP; in a plant the one-station options are refused first.
+void apply_station_options(const po::variables_map& vm, bool plant, config::StationConfig& station) {
+    auto& c = station.server;
+    auto& frontends = station.frontends;
+    if (vm.count("profile")) c.profile = vm["profile"].as<std::string>();
+    if (vm.count("bind")) c.bind = vm["bind"].as<std::string>();
+    if (vm.count("tcp-port")) replace_ports(c, Transport::Tcp, vm["tcp-port"].as<std::vector<unsigned>>(), "tcp-port");
+    if (vm.count("udp-port")) replace_ports(c, Transport::Udp, vm["udp-port"].as<std::vector<unsigned>>(), "udp-port");
+    if (vm.count("data-code")) {
+        auto code = config::parse_data_code(vm["data-code"].as<std::string>(), "--data-code");
+        for (auto& p : c.ports) p.data_code = code;
+    }
+    if (vm.count("max-connections")) {
+        auto n = vm["max-connections"].as<unsigned>();
+        if (n == 0) throw ConfigError("--max-connections 0: must be at least 1; use 1 to reproduce an iQ-R built-in port");
+        for (auto& p : c.ports) p.max_connections = n;
+    }
+    if (vm.count("idle-timeout")) {
+        auto seconds = vm["idle-timeout"].as<double>();
+        if (seconds < 0 || seconds > 86400) throw ConfigError("--idle-timeout: use 0 (never) to 86400 seconds");
+        for (auto& p : c.ports) p.idle_timeout_ms = static_cast<unsigned>(seconds * 1000);
+    }
+    if (vm.count("partial-frame-timeout")) {
+        auto seconds = vm["partial-frame-timeout"].as<double>();
+        if (seconds < 0 || seconds > 86400) throw ConfigError("--partial-frame-timeout: use 0 (never) to 86400 seconds");
+        for (auto& p : c.ports) p.partial_frame_timeout_ms = static_cast<unsigned>(seconds * 1000);
+    }
+    if (vm.count("max-connections-per-address")) {
+        auto n = vm["max-connections-per-address"].as<unsigned>();
+        for (auto& p : c.ports) p.max_connections_per_address = n;
+    }
+    if (vm.count("network-no") || vm.count("station-no")) {
+        auto numbers = config::checked_station_numbers(vm.count("network-no") ? vm["network-no"].as<unsigned>() : 0,
+                                                       vm.count("station-no") ? vm["station-no"].as<unsigned>() : 0,
+                                                       "--network-no/--station-no");
+        for (auto& p : c.ports) p.numbers = numbers;
+    }
+    if (vm.count("max-request-bytes")) {
+        c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();
+        if (c.max_request_bytes < 64 || c.max_request_bytes > (1u << 20))
+            throw ConfigError("--max-request-bytes: use 64 to 1048576 (default 8192)");
+    }
+    if (vm.count("log-level")) {
+        c.log_level = vm["log-level"].as<std::string>();
+        if (!config::valid_log_level(c.log_level))
+            throw ConfigError("--log-level " + c.log_level + ": unknown level; use trace, debug, info, warn, error or off");
+    }
+    if (vm.count("ready-file")) c.ready_file = vm["ready-file"].as<std::string>();
+    if (vm.count("http-port")) {
+        auto port = vm["http-port"].as<unsigned>();
+        if (port > 65535) throw ConfigError("--http-port " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
+        c.http.port = static_cast<std::uint16_t>(port);
+        c.http.enabled = true;
+    }
+    if (vm.count("http-bind")) c.http.bind = vm["http-bind"].as<std::string>();
+    if (vm.count("no-http")) {
+        if (vm.count("http-port") || vm.count("http-bind"))
+            throw ConfigError("--no-http contradicts --http-port/--http-bind; give one or the other");
+        c.http.enabled = false;
+    }
+    if (vm.count("switch")) c.cpu.runtime.run_switch = config::parse_run_switch(vm["switch"].as<std::string>(), "--switch");
+    if (vm.count("state-dir")) {
+        std::filesystem::path dir(vm["state-dir"].as<std::string>());
+        c.persistence.state_dir = (plant ? dir / c.name : dir).string();   // a plant: a folder per station
+    }
+    if (vm.count("drive"))
+        for (const auto& text : vm["drive"].as<std::vector<std::string>>()) c.drives.push_back(config::parse_drive_option(text));
+    if (vm.count("scenario")) {
+        auto files = vm["scenario"].as<std::vector<std::string>>();
+        c.scenarios.insert(c.scenarios.end(), files.begin(), files.end());
+    }
+    if (vm.count("labels"))
+        for (const auto& file : vm["labels"].as<std::vector<std::string>>()) {
+            auto more = config::load_labels_file(file);
+            c.labels.structures.insert(c.labels.structures.end(), more.structures.begin(), more.structures.end());
+            c.labels.labels.insert(c.labels.labels.end(), more.labels.begin(), more.labels.end());
+        }
+    if (vm.count("record")) c.record_file = vm["record"].as<std::string>();
+    if (vm.count("record-pcap")) c.record_pcap_file = vm["record-pcap"].as<std::string>();
+    if (vm.count("clock-speed")) {
+        c.clock_speed = vm["clock-speed"].as<double>();
+        if (!(c.clock_speed >= config::kMinClockSpeed && c.clock_speed <= config::kMaxClockSpeed))
+            throw ConfigError(fmt::format("--clock-speed {}: out of range; {}", c.clock_speed, config::kClockSpeedFix));
+    }
+    if (vm.count("timing")) c.timing.mode = config::parse_timing_mode(vm["timing"].as<std::string>(), "--timing");
+    if (vm.count("clock")) {
+        auto mode = vm["clock"].as<std::string>();
+        if (mode != "realtime" && mode != "frozen")
+            throw ConfigError("--clock " + mode + ": use realtime or frozen");
+        c.clock_frozen = mode == "frozen";
+    }
+    if (vm.count("snapshot")) c.snapshot_file = vm["snapshot"].as<std::string>();
+    if (vm.count("hostlink-port")) {
+        auto port = vm["hostlink-port"].as<unsigned>();
+        if (port > 65535) throw ConfigError("--hostlink-port " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
+        config::enable_hostlink(frontends.hostlink);
+        frontends.hostlink.port.port = static_cast<std::uint16_t>(port);
+    }
+    if (vm.count("serial")) {
+        if (!frontends.hostlink.enabled)
+            throw ConfigError("--serial serves the Ladder Motion host link; give \"kind\": \"ladder-motion\", a \"hostlink\" "
+                              "section or --hostlink-port too");
+        frontends.hostlink.serial_path = vm["serial"].as<std::string>();
+    }
+    if (frontends.kind == config::StationKind::LadderMotion && !c.ports.empty())
+        throw ConfigError("a ladder-motion station serves no SLMP ports; leave out --tcp-port/--udp-port (its port is "
+                          "--hostlink-port or \"hostlink\": {\"tcp_port\": ...}), or use \"kind\": \"melsec\" to serve both");
+    if (frontends.kind == config::StationKind::SharpJw && (!c.ports.empty() || frontends.hostlink.enabled))
+        throw ConfigError("a sharp-jw station serves only the JW-51CM computer link; leave out --tcp-port/--udp-port/"
+                          "--hostlink-port (its ports are \"jw51cm\": {\"tcp_port\": ..., \"udp_port\": ...}), or use "
+                          "\"kind\": \"melsec\" to serve several protocols");
+    if (c.ports.empty() && !frontends.hostlink.enabled && !frontends.jw51cm.enabled)
+        throw ConfigError((c.name.empty() ? std::string() : "station '" + c.name + "': ") + "no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
 }
 
 }  // namespace
@@ -45,6 +167,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("tcp-port", po::value<std::vector<unsigned>>()->multitoken(), "TCP port(s) to serve; 0 = any free port (default 5000)")
         ("udp-port", po::value<std::vector<unsigned>>()->multitoken(), "UDP port(s) to serve; 0 = any free port (default 5000)")
         ("bind,b", po::value<std::string>(), "address to listen on (default 0.0.0.0)")
+        ("threads", po::value<unsigned>(), "threads serving the stations (default: the machine's cores; a station's connections stay on its thread)")
         ("data-code", po::value<std::string>(), "binary, ascii or auto (detect per message; default)")
         ("max-connections", po::value<unsigned>(), "TCP clients served at once per port (default 64; 1 = iQ-R built-in port)")
         ("idle-timeout", po::value<double>(), "close a TCP connection silent for this many seconds (default 300; 0 = never)")
@@ -103,125 +226,27 @@ CommandLine parse_command_line(int argc, char** argv) {
         return cl;
     }
 
-    auto& c = cl.config;
     if (vm.count("check-config")) {
         if (vm.count("config")) throw ConfigError("--check-config FILE checks FILE; leave --config out");
         cl.check_only = true;
-        c = config::load_server_config(vm["check-config"].as<std::string>());
-        cl.frontends = config::load_frontends_config(vm["check-config"].as<std::string>());
+        cl.plant = config::load_plant_config(vm["check-config"].as<std::string>());
+    } else if (vm.count("config")) {
+        cl.plant = config::load_plant_config(vm["config"].as<std::string>());
+    } else {
+        cl.plant.stations.emplace_back();
     }
-    if (vm.count("config")) {
-        c = config::load_server_config(vm["config"].as<std::string>());
-        cl.frontends = config::load_frontends_config(vm["config"].as<std::string>());
+    if (vm.count("threads")) {
+        auto n = vm["threads"].as<unsigned>();
+        if (n == 0 || n > 256) throw ConfigError("--threads " + std::to_string(n) + ": use 1 to 256 (default: the machine's cores)");
+        cl.plant.threads = n;
     }
-    // A Ladder Motion or Sharp JW station has no SLMP port (not even the default 5000).
-    if (cl.frontends.kind != config::StationKind::Melsec) c.ports.clear();
-    if (vm.count("profile")) c.profile = vm["profile"].as<std::string>();
-    if (vm.count("bind")) c.bind = vm["bind"].as<std::string>();
-    if (vm.count("tcp-port")) replace_ports(c, Transport::Tcp, vm["tcp-port"].as<std::vector<unsigned>>(), "tcp-port");
-    if (vm.count("udp-port")) replace_ports(c, Transport::Udp, vm["udp-port"].as<std::vector<unsigned>>(), "udp-port");
-    if (vm.count("data-code")) {
-        auto code = config::parse_data_code(vm["data-code"].as<std::string>(), "--data-code");
-        for (auto& p : c.ports) p.data_code = code;
-    }
-    if (vm.count("max-connections")) {
-        auto n = vm["max-connections"].as<unsigned>();
-        if (n == 0) throw ConfigError("--max-connections 0: must be at least 1; use 1 to reproduce an iQ-R built-in port");
-        for (auto& p : c.ports) p.max_connections = n;
-    }
-    if (vm.count("idle-timeout")) {
-        auto seconds = vm["idle-timeout"].as<double>();
-        if (seconds < 0 || seconds > 86400) throw ConfigError("--idle-timeout: use 0 (never) to 86400 seconds");
-        for (auto& p : c.ports) p.idle_timeout_ms = static_cast<unsigned>(seconds * 1000);
-    }
-    if (vm.count("partial-frame-timeout")) {
-        auto seconds = vm["partial-frame-timeout"].as<double>();
-        if (seconds < 0 || seconds > 86400) throw ConfigError("--partial-frame-timeout: use 0 (never) to 86400 seconds");
-        for (auto& p : c.ports) p.partial_frame_timeout_ms = static_cast<unsigned>(seconds * 1000);
-    }
-    if (vm.count("max-connections-per-address")) {
-        auto n = vm["max-connections-per-address"].as<unsigned>();
-        for (auto& p : c.ports) p.max_connections_per_address = n;
-    }
-    if (vm.count("network-no") || vm.count("station-no")) {
-        auto numbers = config::checked_station_numbers(vm.count("network-no") ? vm["network-no"].as<unsigned>() : 0,
-                                                       vm.count("station-no") ? vm["station-no"].as<unsigned>() : 0,
-                                                       "--network-no/--station-no");
-        for (auto& p : c.ports) p.numbers = numbers;
-    }
-    if (vm.count("max-request-bytes")) {
-        c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();
-        if (c.max_request_bytes < 64 || c.max_request_bytes > (1u << 20))
-            throw ConfigError("--max-request-bytes: use 64 to 1048576 (default 8192)");
-    }
-    if (vm.count("log-level")) {
-        c.log_level = vm["log-level"].as<std::string>();
-        if (!config::valid_log_level(c.log_level))
-            throw ConfigError("--log-level " + c.log_level + ": unknown level; use trace, debug, info, warn, error or off");
-    }
-    if (vm.count("ready-file")) c.ready_file = vm["ready-file"].as<std::string>();
-    if (vm.count("http-port")) {
-        auto port = vm["http-port"].as<unsigned>();
-        if (port > 65535) throw ConfigError("--http-port " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
-        c.http.port = static_cast<std::uint16_t>(port);
-        c.http.enabled = true;
-    }
-    if (vm.count("http-bind")) c.http.bind = vm["http-bind"].as<std::string>();
-    if (vm.count("no-http")) {
-        if (vm.count("http-port") || vm.count("http-bind"))
-            throw ConfigError("--no-http contradicts --http-port/--http-bind; give one or the other");
-        c.http.enabled = false;
-    }
-    if (vm.count("switch")) c.cpu.runtime.run_switch = config::parse_run_switch(vm["switch"].as<std::string>(), "--switch");
-    if (vm.count("state-dir")) c.persistence.state_dir = vm["state-dir"].as<std::string>();
-    if (vm.count("drive"))
-        for (const auto& text : vm["drive"].as<std::vector<std::string>>()) c.drives.push_back(config::parse_drive_option(text));
-    if (vm.count("scenario")) {
-        auto files = vm["scenario"].as<std::vector<std::string>>();
-        c.scenarios.insert(c.scenarios.end(), files.begin(), files.end());
-    }
-    if (vm.count("labels"))
-        for (const auto& file : vm["labels"].as<std::vector<std::string>>()) {
-            auto more = config::load_labels_file(file);
-            c.labels.structures.insert(c.labels.structures.end(), more.structures.begin(), more.structures.end());
-            c.labels.labels.insert(c.labels.labels.end(), more.labels.begin(), more.labels.end());
-        }
-    if (vm.count("record")) c.record_file = vm["record"].as<std::string>();
-    if (vm.count("record-pcap")) c.record_pcap_file = vm["record-pcap"].as<std::string>();
-    if (vm.count("clock-speed")) {
-        c.clock_speed = vm["clock-speed"].as<double>();
-        if (!(c.clock_speed >= config::kMinClockSpeed && c.clock_speed <= config::kMaxClockSpeed))
-            throw ConfigError(fmt::format("--clock-speed {}: out of range; {}", c.clock_speed, config::kClockSpeedFix));
-    }
-    if (vm.count("timing")) c.timing.mode = config::parse_timing_mode(vm["timing"].as<std::string>(), "--timing");
-    if (vm.count("clock")) {
-        auto mode = vm["clock"].as<std::string>();
-        if (mode != "realtime" && mode != "frozen")
-            throw ConfigError("--clock " + mode + ": use realtime or frozen");
-        c.clock_frozen = mode == "frozen";
-    }
-    if (vm.count("snapshot")) c.snapshot_file = vm["snapshot"].as<std::string>();
-    if (vm.count("hostlink-port")) {
-        auto port = vm["hostlink-port"].as<unsigned>();
-        if (port > 65535) throw ConfigError("--hostlink-port " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
-        config::enable_hostlink(cl.frontends.hostlink);
-        cl.frontends.hostlink.port.port = static_cast<std::uint16_t>(port);
-    }
-    if (vm.count("serial")) {
-        if (!cl.frontends.hostlink.enabled)
-            throw ConfigError("--serial serves the Ladder Motion host link; give \"kind\": \"ladder-motion\", a \"hostlink\" "
-                              "section or --hostlink-port too");
-        cl.frontends.hostlink.serial_path = vm["serial"].as<std::string>();
-    }
-    if (cl.frontends.kind == config::StationKind::LadderMotion && !c.ports.empty())
-        throw ConfigError("a ladder-motion station serves no SLMP ports; leave out --tcp-port/--udp-port (its port is "
-                          "--hostlink-port or \"hostlink\": {\"tcp_port\": ...}), or use \"kind\": \"melsec\" to serve both");
-    if (cl.frontends.kind == config::StationKind::SharpJw && (!c.ports.empty() || cl.frontends.hostlink.enabled))
-        throw ConfigError("a sharp-jw station serves only the JW-51CM computer link; leave out --tcp-port/--udp-port/"
-                          "--hostlink-port (its ports are \"jw51cm\": {\"tcp_port\": ..., \"udp_port\": ...}), or use "
-                          "\"kind\": \"melsec\" to serve several protocols");
-    if (c.ports.empty() && !cl.frontends.hostlink.enabled && !cl.frontends.jw51cm.enabled)
-        throw ConfigError("no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
+    if (cl.plant.plant)
+        for (const char* option : kOneStationOptions)
+            if (vm.count(option))
+                throw ConfigError(std::string("--") + option + " sets one station, and the configuration is a plant of " +
+                                  std::to_string(cl.plant.stations.size()) + " stations; give it in each station's "
+                                  "entry in the file instead (docs/plants.md)");
+    for (auto& station : cl.plant.stations) apply_station_options(vm, cl.plant.plant, station);
     return cl;
 }
 

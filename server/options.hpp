@@ -7,12 +7,15 @@
 
 #include "config/config.hpp"
 #include "config/frontend_config.hpp"
+#include "config/plant_config.hpp"
 
 namespace slmp::server {
 
 struct CommandLine {
-    config::ServerConfig config;
-    config::FrontEndsConfig frontends;   // the station's kind and its host-link / JW-51CM ports
+    // One station, or a plant of them ("stations", docs/plants.md). The
+    // process-wide settings (HTTP, log level, ready file) are the same in
+    // every station's ServerConfig; stations.front()'s are read.
+    config::PlantConfig plant;
     bool exit_now = false;      // --help, --version, --list-profiles: printed already
     bool check_only = false;    // --check-config: check the configuration, start nothing
 };

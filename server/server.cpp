@@ -1,9 +1,12 @@
 #include "server/server.hpp"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
@@ -14,6 +17,8 @@ namespace asio = boost::asio;
 
 namespace {
 
+constexpr std::size_t kStationsLogged = 16;   // start-up lines; the rest are in GET /api/stations
+
 asio::ip::address bind_address(const std::string& text) {
     boost::system::error_code ec;
     auto address = asio::ip::make_address(text, ec);
@@ -21,50 +26,123 @@ asio::ip::address bind_address(const std::string& text) {
     return address;
 }
 
+// A thread per core (or --threads), but no more threads than stations: a
+// station and its connections stay on one thread.
+std::vector<std::unique_ptr<asio::io_context>> make_threads(const config::PlantConfig& plant) {
+    std::size_t wanted = plant.threads ? plant.threads : std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::unique_ptr<asio::io_context>> threads(std::min(wanted, plant.stations.size()));
+    for (auto& io : threads) io = std::make_unique<asio::io_context>(1);
+    return threads;
+}
+
+// A plant holds two sockets a station and more per client; the soft limit
+// (often 1024) would refuse them long before the hard one.
+void raise_open_file_limit() {
+    rlimit limit{};
+    if (getrlimit(RLIMIT_NOFILE, &limit) != 0 || limit.rlim_cur >= limit.rlim_max) return;
+    limit.rlim_cur = limit.rlim_max;
+    setrlimit(RLIMIT_NOFILE, &limit);
+}
+
 }  // namespace
 
-Server::Server(const config::ServerConfig& config, const config::FrontEndsConfig& frontends)
-    : config_(config),
-      frontends_(frontends),
-      station_(io_, config),
-      listeners_(io_, station_, config_, frontends_, bind_address(config_.bind)) {
-    station_.connect(listeners_);
-    if (config_.http.enabled) {
-        control::PortList ports{config_.bind, listeners_.tcp_ports(), listeners_.udp_ports(), 0};
-        auto http_bind = config_.http.bind.empty() ? bind_address(config_.bind) : bind_address(config_.http.bind);
-        http_ = std::make_unique<control::HttpServer>(io_, station_, config_.http, http_bind, std::move(ports));
+Server::Served::Served(asio::io_context& home, const config::StationConfig& station_config)
+    : home(home),
+      settings(station_config),
+      station(home, settings.server),
+      listeners(home, station, settings.server, settings.frontends, bind_address(settings.server.bind)) {
+    station.connect(listeners);
+}
+
+Server::Server(const config::PlantConfig& plant)
+    : plant_(plant),
+      threads_(make_threads(plant_)),
+      signals_(*threads_.front(), SIGINT, SIGTERM),
+      snapshot_signal_(*threads_.front(), SIGUSR1) {
+    raise_open_file_limit();
+    std::vector<control::ServedStation> served;
+    for (std::size_t k = 0; k < plant_.stations.size(); ++k) {
+        const auto& station_config = plant_.stations[k];
+        try {
+            stations_.push_back(std::make_unique<Served>(*threads_[k % threads_.size()], station_config));
+        } catch (const config::ConfigError& e) {
+            if (!plant_.plant) throw;
+            throw config::ConfigError("station '" + station_config.server.name + "': " + e.what());
+        }
+        auto& s = *stations_.back();
+        served.push_back({s.settings.server.name, s.station, s.home,
+                          control::PortList{s.settings.server.bind, s.listeners.tcp_ports(), s.listeners.udp_ports(), 0}});
     }
+    if (first().http.enabled)
+        http_ = std::make_unique<control::HttpServer>(*threads_.front(), served, first().http,
+                                                      bind_address(http_bind()), plant_.plant);
+}
+
+// "http": {"bind"}, else the stations' bind address when they share one, else
+// every address (a plant on 127.0.1.x answers HTTP on all of them).
+std::string Server::http_bind() const {
+    if (!first().http.bind.empty()) return first().http.bind;
+    for (const auto& station : plant_.stations)
+        if (station.server.bind != first().bind) return "0.0.0.0";
+    return first().bind;
+}
+
+Server::~Server() = default;
+
+void Server::log_stations() const {
+    for (std::size_t k = 0; k < stations_.size() && k < kStationsLogged; ++k) {
+        const auto& s = *stations_[k];
+        const auto& profile = s.station.cpu().profile();
+        auto who = plant_.plant ? "station " + s.settings.server.name + ": " : std::string("slmp-sim 0.1.0: ");
+        spdlog::info("{}{} ({}, model code {:04X}) on {} — TCP {} / UDP {}", who, profile.name, profile.type_name,
+                     profile.model_code, s.settings.server.bind, port_list(s.listeners.tcp_ports()),
+                     port_list(s.listeners.udp_ports()));
+        const auto& frontends = s.settings.frontends;
+        if (frontends.hostlink.enabled)
+            spdlog::info("{} station: Ladder Motion host link on TCP {}", config::kind_name(frontends.kind),
+                         port_list(s.listeners.hostlink_ports()));
+        if (frontends.jw51cm.enabled)
+            spdlog::info("{} station: JW-51CM computer link on TCP {} / UDP {}", config::kind_name(frontends.kind),
+                         port_list(s.listeners.jw51cm_tcp_ports()), port_list(s.listeners.jw51cm_udp_ports()));
+    }
+    if (stations_.size() > kStationsLogged)
+        spdlog::info("... and {} more stations (GET /api/stations lists them all)", stations_.size() - kStationsLogged);
+    if (plant_.plant)
+        spdlog::info("slmp-sim 0.1.0: a plant of {} stations on {} thread(s)", stations_.size(), threads_.size());
+    if (http_)
+        spdlog::info("web monitor and HTTP API on http://{}:{}/", http_bind(), http_->port());
 }
 
 void Server::run() {
-    const auto& profile = station_.cpu().profile();
-    spdlog::info("slmp-sim 0.1.0: {} ({}, model code {:04X}) on {} — TCP {} / UDP {}", profile.name, profile.type_name,
-                 profile.model_code, config_.bind, port_list(listeners_.tcp_ports()), port_list(listeners_.udp_ports()));
-    if (frontends_.hostlink.enabled)
-        spdlog::info("{} station: Ladder Motion host link on TCP {}", config::kind_name(frontends_.kind),
-                     port_list(listeners_.hostlink_ports()));
-    if (frontends_.jw51cm.enabled)
-        spdlog::info("{} station: JW-51CM computer link on TCP {} / UDP {}", config::kind_name(frontends_.kind),
-                     port_list(listeners_.jw51cm_tcp_ports()), port_list(listeners_.jw51cm_udp_ports()));
-    if (http_)
-        spdlog::info("web monitor and HTTP API on http://{}:{}/", config_.http.bind.empty() ? config_.bind : config_.http.bind,
-                     http_->port());
-    station_.start();
-    if (station_.has_state_directory()) wait_for_snapshot_signal();
+    log_stations();
+    bool any_state_directory = false;
+    for (auto& s : stations_) {
+        s->station.start();
+        any_state_directory = any_state_directory || s->station.has_state_directory();
+    }
+    if (any_state_directory) wait_for_snapshot_signal();
     signals_.async_wait([this](const boost::system::error_code& ec, int signal) {
         if (ec) return;
         spdlog::info("signal {} received; shutting down", signal);
         stop();
     });
+    if (http_) http_->set_ready();
     write_ready_file();
-    io_.run();
+    std::vector<std::thread> workers;
+    for (std::size_t k = 1; k < threads_.size(); ++k) workers.emplace_back([io = threads_[k].get()] { io->run(); });
+    threads_.front()->run();
+    for (auto& worker : workers) worker.join();
     spdlog::info("stopped");
 }
 
 void Server::stop() {
-    station_.stop();
+    // Each station stops on its own thread; its io_context then runs out of work.
+    for (auto& s : stations_)
+        asio::post(s->home, [served = s.get()] {
+            served->station.stop();
+            served->listeners.stop();
+        });
     snapshot_signal_.cancel();
-    listeners_.stop();
     if (http_) http_->stop();
     signals_.cancel();
 }
@@ -72,30 +150,50 @@ void Server::stop() {
 // Tests and scripts wait for this file instead of sleeping; it is written
 // whole (temporary file, then rename) so a reader never sees half of it.
 void Server::write_ready_file() const {
-    if (config_.ready_file.empty()) return;
-    std::filesystem::path path(config_.ready_file);
+    if (first().ready_file.empty()) return;
+    std::filesystem::path path(first().ready_file);
     auto temp = path;
     temp += ".tmp";
+    // A port kind with no ports is an empty list (port_list's "-" is for the log line).
+    auto ports_of = [](const Served& s) {
+        nlohmann::json ready{{"tcp", s.listeners.tcp_ports()}, {"udp", s.listeners.udp_ports()}};
+        if (s.settings.frontends.hostlink.enabled) ready["hostlink"] = s.listeners.hostlink_ports();
+        if (!s.listeners.serial_device().empty()) ready["serial"] = s.listeners.serial_device();
+        if (s.settings.frontends.jw51cm.enabled)
+            ready["jw51cm"] = {{"tcp", s.listeners.jw51cm_tcp_ports()}, {"udp", s.listeners.jw51cm_udp_ports()}};
+        return ready;
+    };
+    auto ready = ports_of(*stations_.front());   // a plant's first station here too, as before plants
+    if (plant_.plant) {
+        auto list = nlohmann::json::array();
+        for (const auto& s : stations_) {
+            auto entry = ports_of(*s);
+            entry["name"] = s->settings.server.name;
+            entry["bind"] = s->settings.server.bind;
+            list.push_back(std::move(entry));
+        }
+        ready["stations"] = std::move(list);
+    }
+    if (http_) ready["http"] = http_->port();
+    ready["threads"] = threads_.size();
+    ready["pid"] = getpid();
     {
-        // A port kind with no ports is an empty list (port_list's "-" is for the log line).
-        nlohmann::json ready{{"tcp", listeners_.tcp_ports()}, {"udp", listeners_.udp_ports()}};
-        if (frontends_.hostlink.enabled) ready["hostlink"] = listeners_.hostlink_ports();
-        if (!listeners_.serial_device().empty()) ready["serial"] = listeners_.serial_device();
-        if (frontends_.jw51cm.enabled)
-            ready["jw51cm"] = {{"tcp", listeners_.jw51cm_tcp_ports()}, {"udp", listeners_.jw51cm_udp_ports()}};
-        if (http_) ready["http"] = http_->port();
-        ready["pid"] = getpid();
         std::ofstream(temp) << ready.dump() << "\n";
     }
     std::filesystem::rename(temp, path);
 }
 
-// SIGUSR1 saves a snapshot now (for scripts that want one before copying the
-// state directory).
+// SIGUSR1 saves a snapshot of every station with a state directory now (for
+// scripts that want one before copying the state directory).
 void Server::wait_for_snapshot_signal() {
     snapshot_signal_.async_wait([this](const boost::system::error_code& ec, int) {
         if (ec) return;
-        if (station_.save_snapshot("SIGUSR1")) spdlog::info("state directory: snapshot saved on SIGUSR1");
+        for (auto& s : stations_)
+            asio::post(s->home, [served = s.get()] {
+                if (served->station.has_state_directory() && served->station.save_snapshot("SIGUSR1"))
+                    spdlog::info("state directory{}: snapshot saved on SIGUSR1",
+                                 served->settings.server.name.empty() ? "" : " of " + served->settings.server.name);
+            });
         wait_for_snapshot_signal();
     });
 }

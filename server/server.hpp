@@ -1,13 +1,13 @@
-// The running simulator: one station, its listeners, the HTTP API, and the
-// signals that stop it.
+// The running simulator: its stations (one, or a plant of them), each with its
+// listeners on its home thread; the HTTP API; the signals that stop it.
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "station/asio.hpp"
 
-#include "config/config.hpp"
-#include "config/frontend_config.hpp"
+#include "config/plant_config.hpp"
 #include "control/http_server.hpp"
 #include "server/listeners.hpp"
 #include "station/station.hpp"
@@ -16,26 +16,39 @@ namespace slmp::server {
 
 class Server {
 public:
-    // Builds the station and binds every port; throws config::ConfigError or
-    // boost::system::system_error with a message that names the problem.
-    Server(const config::ServerConfig& config, const config::FrontEndsConfig& frontends = {});
+    // Builds every station and binds every port; throws config::ConfigError or
+    // boost::system::system_error with a message that names the problem (and
+    // the station, in a plant).
+    explicit Server(const config::PlantConfig& plant);
+    ~Server();
 
     // Serves until SIGINT or SIGTERM, then closes everything cleanly.
     void run();
 
 private:
+    // One station on its home io_context: everything it does (its
+    // connections, scan, scenarios, the HTTP requests for it) runs there.
+    struct Served {
+        Served(boost::asio::io_context& home, const config::StationConfig& config);
+        boost::asio::io_context& home;
+        config::StationConfig settings;   // as read (Listeners keep references into it)
+        station::Station station;
+        Listeners listeners;
+    };
+
+    void log_stations() const;
+    std::string http_bind() const;
     void write_ready_file() const;
     void stop();
     void wait_for_snapshot_signal();
+    const config::ServerConfig& first() const { return plant_.stations.front().server; }   // the process-wide keys
 
-    config::ServerConfig config_;
-    config::FrontEndsConfig frontends_;
-    boost::asio::io_context io_{1};
-    station::Station station_;
-    Listeners listeners_;
-    std::unique_ptr<control::HttpServer> http_;   // null with --no-http
-    boost::asio::signal_set signals_{io_, SIGINT, SIGTERM};
-    boost::asio::signal_set snapshot_signal_{io_, SIGUSR1};
+    config::PlantConfig plant_;
+    std::vector<std::unique_ptr<boost::asio::io_context>> threads_;   // one io_context a thread; [0] is main's
+    std::vector<std::unique_ptr<Served>> stations_;
+    std::unique_ptr<control::HttpServer> http_;   // null with --no-http; destroyed before the stations
+    boost::asio::signal_set signals_;
+    boost::asio::signal_set snapshot_signal_;
 };
 
 }  // namespace slmp::server

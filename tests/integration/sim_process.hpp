@@ -173,6 +173,7 @@ struct SimOptions {
     std::vector<std::string> args;          // anything else (--idle-timeout 0.3, ...)
     std::string config_json;                // when set, written to a file and passed as --config
     bool default_log_level = false;         // false: --log-level warn (quiet test logs)
+    bool plant = false;                     // config_json is a plant: its stations name their ports and binds
 };
 
 inline SimOptions with_args(std::vector<std::string> args) {
@@ -190,9 +191,12 @@ public:
             config_file_ = dir_.write("config.json", options.config_json);
             args.insert(args.end(), {"--config", config_file_.string()});
         }
-        for (unsigned i = 0; i < options.tcp_ports; ++i) args.insert(args.end(), {"--tcp-port", "0"});
-        for (unsigned i = 0; i < options.udp_ports; ++i) args.insert(args.end(), {"--udp-port", "0"});
-        args.insert(args.end(), {"--bind", "127.0.0.1", "--ready-file", ready_file_.string()});
+        if (!options.plant) {
+            for (unsigned i = 0; i < options.tcp_ports; ++i) args.insert(args.end(), {"--tcp-port", "0"});
+            for (unsigned i = 0; i < options.udp_ports; ++i) args.insert(args.end(), {"--udp-port", "0"});
+            args.insert(args.end(), {"--bind", "127.0.0.1"});
+        }
+        args.insert(args.end(), {"--ready-file", ready_file_.string()});
         if (!options.default_log_level) args.insert(args.end(), {"--log-level", "warn"});
         // The HTTP API on an ephemeral port too, so parallel tests never fight
         // over 8080 — unless the test sets up HTTP itself.

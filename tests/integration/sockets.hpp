@@ -45,11 +45,14 @@ inline int remaining_ms(std::chrono::steady_clock::time_point deadline) {
     return left.count() < 0 ? 0 : static_cast<int>(left.count());
 }
 
-inline sockaddr_in loopback(std::uint16_t port) {
+// 127.0.0.1:port, or `address`:port (a plant's stations on 127.0.1.x).
+inline sockaddr_in loopback(std::uint16_t port, const char* address = nullptr) {
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
     addr.sin_port = htons(port);
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (address && ::inet_pton(AF_INET, address, &addr.sin_addr) != 1)
+        throw std::runtime_error(std::string("not an IPv4 address: ") + address);
     return addr;
 }
 
@@ -83,7 +86,8 @@ public:
     // Connects to 127.0.0.1:port, from `source` when given (any 127.x.y.z: on
     // Linux all of 127/8 is loopback, so tests can be several client addresses).
     // Returns nullopt and sets `error` (errno) on failure.
-    static std::optional<TcpClient> connect(std::uint16_t port, int* error = nullptr, const char* source = nullptr) {
+    static std::optional<TcpClient> connect(std::uint16_t port, int* error = nullptr, const char* source = nullptr,
+                                            const char* destination = nullptr) {
         int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
         if (fd < 0) throw std::runtime_error("socket() failed");
         int one = 1;
@@ -97,7 +101,7 @@ public:
                 throw std::runtime_error(std::string("cannot bind the client to ") + source);
             }
         }
-        auto addr = loopback(port);
+        auto addr = loopback(port, destination);
         if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
             if (error) *error = errno;
             ::close(fd);
@@ -108,9 +112,9 @@ public:
     }
 
     // Connects or throws (for tests where connecting is not what is tested).
-    static TcpClient open(std::uint16_t port) {
+    static TcpClient open(std::uint16_t port, const char* destination = nullptr) {
         int error = 0;
-        auto client = connect(port, &error);
+        auto client = connect(port, &error, nullptr, destination);
         if (!client) throw std::runtime_error("connect to port " + std::to_string(port) + " failed: " + std::strerror(error));
         return std::move(*client);
     }
@@ -228,8 +232,8 @@ public:
         return ntohs(addr.sin_port);
     }
 
-    bool send_to(std::uint16_t port, std::span<const std::uint8_t> bytes) {
-        auto addr = loopback(port);
+    bool send_to(std::uint16_t port, std::span<const std::uint8_t> bytes, const char* destination = nullptr) {
+        auto addr = loopback(port, destination);
         auto n = ::sendto(fd_, bytes.data(), bytes.size(), 0, reinterpret_cast<sockaddr*>(&addr), sizeof addr);
         return n == static_cast<long>(bytes.size());
     }

@@ -14,6 +14,7 @@
 #include "tools/slmp/options.hpp"
 #include "tools/slmp/output.hpp"
 #include "tools/slmp/password.hpp"
+#include "tools/slmp/station_lookup.hpp"
 
 namespace {
 
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
     Output output(std::cout, options->json);
     try {
         const auto& spec = resolve_command(*options);
+        if (!options->plant_station.empty()) look_up_station(options->target, options->plant_station, options->api_port);
         Client client(options->target, options->frame, options->password);
         Invocation invocation{*options, client, output};
         spec.run(invocation);

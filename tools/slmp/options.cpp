@@ -89,6 +89,8 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         ("timeout", po::value(&timeout)->default_value(timeout), "wait at most this long for each answer (500ms, 2s)")
         ("iqr", po::bool_switch(&iqr), "iQ-R device subcommands 0002/0003 instead of 0000/0001")
         ("password", po::value<std::string>(), "send Remote Unlock (1630) with this password first")
+        ("plant-station", po::value(&o.plant_station), "slmp-sim plant: talk to the station of this name (its port from the HTTP API)")
+        ("api-port", po::value(&o.api_port)->default_value(o.api_port), "slmp-sim's HTTP port, for --plant-station")
         ("json", po::bool_switch(&o.json), "print JSON instead of a table");
     po::options_description specific("Command options");
     specific.add_options()

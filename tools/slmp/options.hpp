@@ -19,6 +19,8 @@ struct Options {
     protocol::DeviceForm form = protocol::DeviceForm::Q;
     bool json = false;
     std::optional<std::string> password;   // --password: Unlock (1630) before the command
+    std::string plant_station;             // --plant-station: look the port up on the simulator's HTTP API
+    std::uint16_t api_port = 8080;         // --api-port: where to look it up
 
     std::string command;
     std::vector<std::string> args;

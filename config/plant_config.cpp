@@ -1,0 +1,277 @@
+// Reading a plant: defaults, stations, templates (docs/plants.md).
+#include "config/plant_config.hpp"
+
+#include <cctype>
+#include <map>
+
+#include "config/config_parts.hpp"
+#include "config/json_path.hpp"
+
+namespace slmp::config {
+
+namespace {
+
+constexpr unsigned kMaxThreads = 256;
+constexpr std::uint64_t kMaxTemplateCount = 10000;
+// Keys that belong to the whole process, not to one station.
+constexpr const char* kPlantWideKeys[] = {"http", "log_level", "threads", "stations"};
+
+// digits, i, + - * and parentheses; nothing else.
+class IndexExpression {
+public:
+    IndexExpression(const std::string& text, long i) : text_(text), i_(i) {}
+    bool evaluate(long* value) {
+        long v = sum();
+        skip_spaces();
+        if (!ok_ || pos_ != text_.size()) return false;
+        *value = v;
+        return true;
+    }
+
+private:
+    void skip_spaces() {
+        while (pos_ < text_.size() && text_[pos_] == ' ') ++pos_;
+    }
+    bool next_is(char ch) {
+        skip_spaces();
+        if (pos_ < text_.size() && text_[pos_] == ch) {
+            ++pos_;
+            return true;
+        }
+        return false;
+    }
+    long primary() {
+        if (next_is('(')) {
+            long v = sum();
+            if (!next_is(')')) ok_ = false;
+            return v;
+        }
+        if (next_is('i')) return i_;
+        if (next_is('-')) return -primary();
+        long v = 0;
+        std::size_t digits = 0;
+        while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_])) && digits < 10) {
+            v = v * 10 + (text_[pos_++] - '0');
+            ++digits;
+        }
+        if (digits == 0 || digits == 10) ok_ = false;
+        return v;
+    }
+    long product() {
+        long v = primary();
+        while (ok_ && next_is('*')) v *= primary();
+        return v;
+    }
+    long sum() {
+        long v = product();
+        while (ok_) {
+            if (next_is('+')) v += product();
+            else if (next_is('-')) v -= product();
+            else break;
+        }
+        return v;
+    }
+
+    const std::string& text_;
+    long i_;
+    std::size_t pos_ = 0;
+    bool ok_ = true;
+};
+
+nlohmann::json expanded(const nlohmann::json& value, long i, const std::string& where) {
+    if (value.is_string()) return expand_placeholders(value.get<std::string>(), i, where);
+    if (value.is_array() || value.is_object()) {
+        auto copy = value;
+        for (auto& item : copy) item = expanded(item, i, where);
+        return copy;
+    }
+    return value;
+}
+
+// "tcp_port": "20000+i" and the "port" of each "ports" entry: numbers for the parser.
+void resolve_port_expressions(nlohmann::json& station, const long* i, const std::string& where) {
+    auto resolve = [&](nlohmann::json& value, const std::string& key) {
+        if (!value.is_string()) return;
+        auto text = value.get<std::string>();
+        long number = 0;
+        if (!i || !evaluate_index_expression(text, *i, &number))
+            throw ConfigError(where + ": /" + key + ": '" + text + "' is not a port number" +
+                              (i ? "; write a number or an expression in i such as \"20000+i\""
+                                 : "; an expression in i needs a template entry (\"template\", \"count\"): write a number"));
+        if (number < 0 || number > 65535)
+            throw ConfigError(where + ": /" + key + ": '" + text + "' gives port " + std::to_string(number) + " for i = " +
+                              std::to_string(*i) + "; keep every station's port within 0-65535");
+        value = number;
+    };
+    for (const char* key : {"tcp_port", "udp_port"})
+        if (station.contains(key)) resolve(station[key], key);
+    if (station.contains("ports") && station["ports"].is_array())
+        for (std::size_t k = 0; k < station["ports"].size(); ++k)
+            if (station["ports"][k].is_object() && station["ports"][k].contains("port"))
+                resolve(station["ports"][k]["port"], "ports/" + std::to_string(k) + "/port");
+}
+
+bool is_melsec(const nlohmann::json& station) {
+    return !station.contains("kind") || station["kind"] == "melsec";
+}
+
+class PlantReader {
+public:
+    PlantReader(const nlohmann::json& root, std::string source, std::filesystem::path directory)
+        : source_(std::move(source)), directory_(std::move(directory)) {
+        defaults_ = root;
+        for (const char* key : {"stations", "threads", "name"}) defaults_.erase(key);
+    }
+
+    // One station entry (a template's already expanded); `i` is its template index.
+    void add(const nlohmann::json& entry, std::size_t position, const long* i, const std::string& entry_where) {
+        for (const char* key : kPlantWideKeys)
+            if (entry.contains(key))
+                throw ConfigError(entry_where + ": /" + key + ": \"" + key +
+                                  "\" is plant-wide; move it to the top level of the file");
+        auto merged = defaults_;
+        // A station's own ports (or kind without SLMP ports) replace the default ports whole.
+        if (entry.contains("ports") || entry.contains("tcp_port") || entry.contains("udp_port") || !is_melsec(entry))
+            for (const char* key : {"ports", "tcp_port", "udp_port"}) merged.erase(key);
+        for (const auto& [key, value] : entry.items()) merged[key] = value;
+        if (!merged.contains("name"))
+            merged["name"] = i ? "station-" + std::to_string(*i) : "station-" + std::to_string(position);
+        auto name = merged["name"].is_string() ? merged["name"].get<std::string>() : std::string();
+        // The plant's state directory is shared: each station keeps its own folder in it.
+        if (defaults_.contains("state_dir") && defaults_["state_dir"].is_string() && !entry.contains("state_dir"))
+            merged["state_dir"] = (std::filesystem::path(defaults_["state_dir"].get<std::string>()) / name).string();
+        auto where = source_ + ", station '" + name + "'";
+        resolve_port_expressions(merged, i, where);
+        JsonAt at(merged, where);
+        StationConfig station{parse_server_config(at, directory_), parse_frontends_config(at)};
+        if (station.frontends.kind != StationKind::Melsec) station.server.ports.clear();
+        check_unique(station, where);
+        stations_.push_back(std::move(station));
+    }
+
+    std::vector<StationConfig> take() { return std::move(stations_); }
+
+private:
+    void check_unique(const StationConfig& station, const std::string& where) {
+        const auto& name = station.server.name;
+        if (auto [it, fresh] = names_.emplace(name, where); !fresh)
+            throw ConfigError(where + ": the name '" + name + "' is taken by another station; give each station its "
+                              "own \"name\" (a template: \"name\": \"press-{i}\")");
+        for (const auto& port : station.server.ports) {
+            if (port.port == 0) continue;
+            auto key = station.server.bind + (port.transport == Transport::Tcp ? " TCP " : " UDP ") +
+                       std::to_string(port.port);
+            if (auto [it, fresh] = ports_.emplace(key, name); !fresh)
+                throw ConfigError(where + ": stations '" + it->second + "' and '" + name + "' both listen on " + key +
+                                  "; give each station its own port (\"tcp_port\": \"20000+i\") or bind address "
+                                  "(\"bind\": \"127.0.1.{i}\")");
+        }
+    }
+
+    std::string source_;
+    std::filesystem::path directory_;
+    nlohmann::json defaults_;
+    std::vector<StationConfig> stations_;
+    std::map<std::string, std::string> names_;
+    std::map<std::string, std::string> ports_;   // "bind TCP port" -> station name
+};
+
+unsigned threads_key(const JsonAt& at) {
+    auto n = static_cast<unsigned>(at.unsigned_int(kMaxThreads));
+    if (n == 0) at.fail("must be at least 1", "leave \"threads\" out to use every core");
+    return n;
+}
+
+}  // namespace
+
+bool evaluate_index_expression(const std::string& text, long i, long* value) {
+    return !text.empty() && IndexExpression(text, i).evaluate(value);
+}
+
+std::string expand_placeholders(const std::string& text, long i, const std::string& where) {
+    std::string out;
+    for (std::size_t pos = 0; pos < text.size();) {
+        auto open = text.find('{', pos);
+        if (open == std::string::npos) {
+            out += text.substr(pos);
+            break;
+        }
+        out += text.substr(pos, open - pos);
+        auto close = text.find('}', open);
+        auto inside = close == std::string::npos ? std::string() : text.substr(open + 1, close - open - 1);
+        auto colon = inside.find(':');
+        auto expression = inside.substr(0, colon);
+        std::size_t width = 0;
+        bool ok = close != std::string::npos;
+        if (ok && colon != std::string::npos) {
+            auto format = inside.substr(colon + 1);
+            ok = format.size() == 2 && format[0] == '0' && format[1] >= '1' && format[1] <= '9';
+            if (ok) width = static_cast<std::size_t>(format[1] - '0');
+        }
+        long value = 0;
+        if (!ok || !evaluate_index_expression(expression, i, &value))
+            throw ConfigError(where + ": '" + text + "': a brace holds no placeholder; write {i}, {i+100}, {i:03} or "
+                              "{2*i+1}");
+        auto digits = std::to_string(value < 0 ? -value : value);
+        if (digits.size() < width) digits.insert(0, width - digits.size(), '0');
+        out += (value < 0 ? "-" : "") + digits;
+        pos = close + 1;
+    }
+    return out;
+}
+
+PlantConfig parse_plant_config(const std::string& json_text, const std::string& source,
+                               const std::filesystem::path& directory) {
+    auto json = parse_json(json_text, source);
+    JsonAt root(json, source);
+    root.expect_object();
+    PlantConfig plant;
+    if (root.has("threads")) plant.threads = threads_key(root["threads"]);
+    if (!root.has("stations")) {
+        auto body = json;
+        body.erase("threads");
+        JsonAt at(body, source);
+        plant.stations.push_back({parse_server_config(at, directory), parse_frontends_config(at)});
+        if (plant.stations.back().frontends.kind != StationKind::Melsec) plant.stations.back().server.ports.clear();
+        return plant;
+    }
+    plant.plant = true;
+    if (root.has("name"))
+        root["name"].fail("a plant has no name of its own", "name each station in \"stations\" instead");
+    auto list = root["stations"];
+    list.expect_array();
+    if (list.json().empty()) list.fail("no stations", "list at least one station, e.g. [{\"name\": \"press-1\"}]");
+    PlantReader reader(json, source, directory);
+    std::size_t position = 0;
+    for (std::size_t k = 0; k < list.json().size(); ++k) {
+        auto entry = list[k];
+        entry.expect_object();
+        auto where = source + ": " + entry.pointer();
+        if (!entry.has("template") && !entry.has("count")) {
+            reader.add(entry.json(), ++position, nullptr, where);
+            continue;
+        }
+        auto body = entry["template"];
+        body.expect_object();
+        auto count = entry["count"].unsigned_int(kMaxTemplateCount);
+        if (count == 0) entry["count"].fail("must be at least 1", "give the number of stations the template makes");
+        long first = entry.has("first") ? static_cast<long>(entry["first"].unsigned_int(1000000)) : 1;
+        // The entry's own keys sit beside the template's (and win): {"template": {...}, "count": 500, "name": "press-{i}"}.
+        auto station = body.json();
+        for (const auto& [key, value] : entry.json().items())
+            if (key != "template" && key != "count" && key != "first") station[key] = value;
+        for (std::uint64_t n = 0; n < count; ++n) {
+            long i = first + static_cast<long>(n);
+            ++position;
+            reader.add(expanded(station, i, where), position, &i, where + " (i = " + std::to_string(i) + ")");
+        }
+    }
+    plant.stations = reader.take();
+    return plant;
+}
+
+PlantConfig load_plant_config(const std::filesystem::path& file) {
+    return parse_plant_config(read_config_file(file), file.string(), file.parent_path());
+}
+
+}  // namespace slmp::config

@@ -1,0 +1,44 @@
+// A configuration file as stations: one station (the keys of
+// docs/configuration.md), or a plant of many ("stations", docs/plants.md).
+// A plant's top-level keys are every station's defaults; a station's own key
+// replaces the default whole. Template entries expand to `count` stations
+// with {i} placeholders in their strings and "20000+i" port expressions.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "config/config.hpp"
+#include "config/frontend_config.hpp"
+
+namespace slmp::config {
+
+struct StationConfig {
+    ServerConfig server;          // its name, profile, ports, bind, state directory, ...
+    FrontEndsConfig frontends;    // its kind and host-link / JW-51CM ports
+};
+
+struct PlantConfig {
+    bool plant = false;           // the file has "stations" (names are shown, routes and metrics carry them)
+    unsigned threads = 0;         // "threads"; 0: --threads or the machine's cores
+    std::vector<StationConfig> stations;   // one or more, names unique
+};
+
+// A file with or without "stations". Throws ConfigError naming the file, the
+// station, the key and the fix.
+PlantConfig load_plant_config(const std::filesystem::path& file);
+PlantConfig parse_plant_config(const std::string& json_text, const std::string& source,
+                               const std::filesystem::path& directory);
+
+// The placeholders of a template's strings, for station i: "{i}", "{i:03}"
+// (zero-padded to 3 digits), "{i+100}", "{2*i+1}". Throws ConfigError (with
+// `where`) for a brace that holds no such expression.
+std::string expand_placeholders(const std::string& text, long i, const std::string& where);
+// An integer expression in i: digits, i, + - * and parentheses ("20000+2*i").
+// Returns false when `text` is not one.
+bool evaluate_index_expression(const std::string& text, long i, long* value);
+
+}  // namespace slmp::config

@@ -1,0 +1,79 @@
+// One station as the HTTP side serves it: its API objects (metrics, event hub,
+// waits, the endpoints' Router), living on the station's own thread. The HTTP
+// server hands each request for the station to that thread (on_station), so
+// the endpoints keep touching the station without a lock (docs/plants.md,
+// "Threads").
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "station/asio.hpp"
+
+#include "control/api.hpp"
+#include "control/device_waits.hpp"
+#include "control/event_hub.hpp"
+#include "control/metrics.hpp"
+#include "control/router.hpp"
+#include "station/station.hpp"
+
+namespace slmp::control {
+
+// What the server gives the HTTP side of each station.
+struct ServedStation {
+    std::string name;                   // empty for a lone station
+    station::Station& station;
+    boost::asio::io_context& home;      // the thread the station runs on
+    PortList ports;
+};
+
+struct StationSide {
+    StationSide(const ServedStation& served, std::uint16_t http_port);
+    StationSide(const StationSide&) = delete;
+    StationSide& operator=(const StationSide&) = delete;
+
+    std::string name;
+    station::Station& station;
+    boost::asio::io_context& home;
+    Metrics metrics;
+    EventHub events;
+    DeviceWaits waits;
+    Api api;
+    Router router;   // every station endpoint, as "/api/devices/{address}", ...
+};
+
+// Runs fn() on the station's thread and resumes the caller on its own with
+// the result (directly, when both are the same thread).
+template <class F>
+boost::asio::awaitable<std::invoke_result_t<F>> on_station(StationSide& side, F fn) {
+    using Result = std::invoke_result_t<F>;
+    auto here = co_await boost::asio::this_coro::executor;
+    if (here == boost::asio::any_io_executor(side.home.get_executor())) co_return fn();
+    co_return co_await boost::asio::co_spawn(
+        side.home, [fn = std::move(fn)]() -> boost::asio::awaitable<Result> { co_return fn(); },
+        boost::asio::use_awaitable);
+}
+
+// The stations of the process, for the plant endpoints.
+struct Plant {
+    std::vector<std::unique_ptr<StationSide>> stations;   // the first answers the routes without /api/stations/{name}
+    bool named = false;                                    // a plant: station names in routes, metrics, lists
+    std::atomic<bool> ready{false};                        // every station started (GET /readyz)
+
+    StationSide* find(std::string_view name);
+};
+
+// GET /healthz, /readyz, /api/stations[/{name}], and for a plant /metrics with
+// a station label (plant_endpoints.cpp).
+void add_plant_endpoints(Router& router, Plant& plant);
+
+// Prometheus texts of several stations as one exposition: each family's HELP
+// and TYPE once, its samples from every station with station="NAME" first
+// among the labels (metrics_merge.cpp).
+std::string merge_metrics(const std::vector<std::pair<std::string, std::string>>& texts);
+
+}  // namespace slmp::control

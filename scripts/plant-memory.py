@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""How a plant's memory and start time scale (docs/plants.md, "Memory").
+
+Starts build/server/slmp-sim with a plant of N stations of one profile (TCP on
+any free port each, 127.0.0.1), then reports:
+  start_s           from exec to the ready file (every station listening)
+  rss_idle_mib      the process's RSS once ready, and per station
+  cpu_idle_percent  CPU the idle plant uses over 3 s (the scans)
+  rss_written_mib   RSS after K stations had every word of D, W, R, ZR and every
+                    bit of M, B written non-zero over HTTP, and the growth per such station
+Nothing is asserted: this is a measurement for closing notes.
+
+  scripts/plant-memory.py --stations 1000 --profile R08CPU --written 10
+"""
+import argparse, json, os, subprocess, sys, tempfile, time, urllib.request
+
+def rss_kib(pid):
+    with open(f"/proc/{pid}/status") as f:
+        for line in f:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1])
+    return 0
+
+def cpu_ticks(pid):
+    with open(f"/proc/{pid}/stat") as f:
+        fields = f.read().rsplit(")", 1)[1].split()
+    return int(fields[11]) + int(fields[12])
+
+def put(port, station, address, values, view):
+    body = json.dumps({"values": values}).encode()
+    url = f"http://127.0.0.1:{port}/api/stations/{station}/devices/{address}?as={view}"
+    req = urllib.request.Request(url, data=body, method="PUT")
+    urllib.request.urlopen(req).read()
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--stations", type=int, default=1000)
+    ap.add_argument("--profile", default="R08CPU")
+    ap.add_argument("--written", type=int, default=10, help="stations whose devices are all written")
+    ap.add_argument("--threads", type=int, default=0)
+    ap.add_argument("--binary", default="build/server/slmp-sim")
+    args = ap.parse_args()
+
+    with tempfile.TemporaryDirectory() as tmp:
+        config = {"bind": "127.0.0.1", "http": {"port": 0}, "log_level": "warn",
+                  "stations": [{"template": {"profile": args.profile}, "count": args.stations,
+                                "name": "s{i}", "tcp_port": 0}]}
+        path = os.path.join(tmp, "plant.json")
+        with open(path, "w") as f:
+            json.dump(config, f)
+        ready = os.path.join(tmp, "ready.json")
+        cmd = [args.binary, "--config", path, "--ready-file", ready]
+        if args.threads:
+            cmd += ["--threads", str(args.threads)]
+        began = time.monotonic()
+        proc = subprocess.Popen(cmd)
+        try:
+            while not os.path.exists(ready):
+                if proc.poll() is not None:
+                    sys.exit("slmp-sim exited before it was ready")
+                time.sleep(0.005)
+            start_s = time.monotonic() - began
+            with open(ready) as f:
+                http = json.load(f)["http"]
+            rss_idle = rss_kib(proc.pid)
+            ticks = cpu_ticks(proc.pid)
+            time.sleep(3)
+            cpu_idle = (cpu_ticks(proc.pid) - ticks) / os.sysconf("SC_CLK_TCK") / 3 * 100
+            info = json.load(urllib.request.urlopen(f"http://127.0.0.1:{http}/api/stations/s1/info"))
+            sizes = info["device_sizes"]
+            for k in range(1, args.written + 1):
+                for area, view in (("D", "words"), ("W", "words"), ("R", "words"), ("ZR", "words"),
+                                   ("M", "bits"), ("B", "bits")):
+                    size = sizes.get(area, 0)
+                    for first in range(0, size, 32768):
+                        n = min(32768, size - first)
+                        start = f"{area}{first:X}" if area in ("W", "B") else f"{area}{first}"
+                        put(http, f"s{k}", start, [1] * n, view)
+            rss_written = rss_kib(proc.pid)
+        finally:
+            proc.terminate()
+            proc.wait()
+    print(json.dumps({
+        "stations": args.stations, "profile": args.profile, "start_s": round(start_s, 2),
+        "rss_idle_mib": round(rss_idle / 1024, 1),
+        "rss_idle_kib_per_station": round(rss_idle / args.stations, 1),
+        "cpu_idle_percent": round(cpu_idle, 1),
+        "written_stations": args.written,
+        "rss_written_mib": round(rss_written / 1024, 1),
+        "rss_kib_per_written_station": round((rss_written - rss_idle) / max(1, args.written), 1),
+    }, indent=1))
+
+if __name__ == "__main__":
+    main()

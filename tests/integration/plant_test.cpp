@@ -1,0 +1,217 @@
+// A plant: many stations in one process on several threads, each its own CPU
+// on its own ports or bind address, reached over SLMP and over
+// /api/stations/{name}/... (docs/plants.md).
+#include <catch2/catch.hpp>
+
+#include <netinet/in.h>
+
+#include "cli_support.hpp"
+#include "frames.hpp"
+#include "http_client.hpp"
+#include "sim_process.hpp"
+#include "sockets.hpp"
+
+using namespace slmp::test;
+
+namespace {
+
+// 3E binary, own station: write D100 = value; read D100; read the type name (0101).
+Bytes write_d100(std::uint16_t value) {
+    return hex("500000FFFF03000E00100001140000640000A80100" + hex_digits(value & 0xFF, 2) + hex_digits(value >> 8, 2));
+}
+const Bytes kReadD100 = hex("500000FFFF03000C00100001040000640000A80100");
+const Bytes kWriteOk = hex("D00000FFFF030002000000");
+Bytes read_answer(std::uint16_t value) {
+    return hex("D00000FFFF0300040000" "00" + hex_digits(value & 0xFF, 2) + hex_digits(value >> 8, 2));
+}
+
+Bytes ask(TcpClient& client, const Bytes& request) {
+    REQUIRE(client.send(request));
+    Bytes frame;
+    std::string why;
+    REQUIRE(client.response(&frame, kReplyTimeout, &why));
+    return frame;
+}
+
+const nlohmann::json& station_in(const SimProcess& sim, const std::string& name) {
+    for (const auto& s : sim.ready()["stations"])
+        if (s["name"] == name) return s;
+    FAIL("no station " << name << " in the ready file: " << sim.ready().dump());
+    throw;
+}
+
+std::uint16_t tcp_of(const SimProcess& sim, const std::string& name) {
+    return station_in(sim, name)["tcp"][0].get<std::uint16_t>();
+}
+
+// A port free on 127.0.1.1 now, for stations that share one port on many addresses.
+std::uint16_t free_port_on_127_0_1_1() {
+    int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    auto addr = loopback(0, "127.0.1.1");
+    REQUIRE(::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+    socklen_t len = sizeof addr;
+    ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
+    ::close(fd);
+    return ntohs(addr.sin_port);
+}
+
+SimOptions plant_options(const std::string& config, std::vector<std::string> args = {}) {
+    SimOptions options;
+    options.plant = true;
+    options.config_json = config;
+    options.args = std::move(args);
+    return options;
+}
+
+}  // namespace
+
+TEST_CASE("plant: stations on two threads keep their own memory, identity and HTTP routes", "[plant]") {
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0},
+        "stations": [{"template": {"profile": "R08CPU"}, "count": 3, "name": "press-{i}", "tcp_port": 0, "udp_port": 0},
+                     {"name": "packer", "profile": "R04CPU", "tcp_port": 0}]})",
+                                 {"--threads", "2"}));
+    REQUIRE(sim.ready()["stations"].size() == 4);
+    CHECK(sim.ready()["threads"] == 2);
+
+    auto press1 = TcpClient::open(tcp_of(sim, "press-1"));
+    auto press2 = TcpClient::open(tcp_of(sim, "press-2"));   // on the other thread
+    CHECK(show(ask(press1, write_d100(0x1234))) == show(kWriteOk));
+    CHECK(show(ask(press1, kReadD100)) == show(read_answer(0x1234)));
+    CHECK(show(ask(press2, kReadD100)) == show(read_answer(0)));
+
+    // UDP reaches press-3's own CPU.
+    UdpClient udp;
+    REQUIRE(udp.send_to(station_in(sim, "press-3")["udp"][0].get<std::uint16_t>(), write_d100(7)));
+    auto answer = udp.receive();
+    REQUIRE(answer);
+    CHECK(show(*answer) == show(kWriteOk));
+
+    // The packer answers 0101 with its own type name.
+    auto packer = TcpClient::open(tcp_of(sim, "packer"));
+    auto type = ask(packer, hex("500000FFFF03000600100001010000"));
+    REQUIRE(type.size() == 11 + 16 + 2);
+    CHECK(std::string(type.begin() + 11, type.begin() + 17) == "R04CPU");
+
+    // HTTP: the station's routes under /api/stations/{name}; the plain routes are the first station's.
+    auto d100 = nlohmann::json::parse(http_get(sim.http_port(), "/api/stations/press-3/devices/D100").body);
+    CHECK(d100["values"][0] == 7);
+    CHECK(nlohmann::json::parse(http_get(sim.http_port(), "/api/devices/D100").body)["values"][0] == 0x1234);
+    auto put = http_put(sim.http_port(), "/api/stations/press-2/devices/D100", R"({"values": [42]})");
+    CHECK(put.status == 200);
+    CHECK(show(ask(press2, kReadD100)) == show(read_answer(42)));
+    CHECK(http_get(sim.http_port(), "/api/stations/nope/devices/D100").status == 404);
+
+    auto list = nlohmann::json::parse(http_get(sim.http_port(), "/api/stations").body);
+    REQUIRE(list.size() == 4);
+    CHECK(list[3]["name"] == "packer");
+    CHECK(list[3]["type_name"] == "R04CPU");
+    CHECK(list[0]["state"] == "RUN");
+    CHECK(list[0]["requests"] == 2);
+    CHECK(list[1]["connections"] == 1);
+    auto filtered = nlohmann::json::parse(http_get(sim.http_port(), "/api/stations?filter=press").body);
+    CHECK(filtered.size() == 3);
+    CHECK(nlohmann::json::parse(http_get(sim.http_port(), "/api/stations/packer").body)["profile"] == "R04CPU");
+
+    CHECK(http_get(sim.http_port(), "/healthz").status == 200);
+    auto ready = http_get(sim.http_port(), "/readyz");
+    CHECK(ready.status == 200);
+    CHECK(nlohmann::json::parse(ready.body) == nlohmann::json{{"ready", true}, {"stations", 4}});
+
+    // One exposition for the plant: every sample carries its station.
+    auto metrics = http_get(sim.http_port(), "/metrics").body;
+    CHECK(metrics.find("slmp_info{station=\"packer\",profile=\"R04CPU\"") != std::string::npos);
+    CHECK(metrics.find("slmp_requests_total{station=\"press-1\",transport=\"tcp\",command=\"1401\"") != std::string::npos);
+    CHECK(metrics.find("# TYPE slmp_requests_total counter") == metrics.rfind("# TYPE slmp_requests_total counter"));
+    auto own = http_get(sim.http_port(), "/api/stations/press-1/metrics").body;
+    CHECK(own.find("slmp_info{profile=\"R08CPU\"") != std::string::npos);
+
+    // A fault posted to press-2 acts on press-2 only.
+    auto posted = http(sim.http_port(), "POST", "/api/stations/press-2/scenarios",
+                       R"({"name": "sick", "faults": [{"do": "end_code", "end_code": "C051"}]})");
+    CHECK(posted.status == 201);
+    CHECK(show(ask(press2, kReadD100)) == show(hex("D00000FFFF03000B0051C000FFFF030001040000")));
+    CHECK(show(ask(press1, kReadD100)) == show(read_answer(0x1234)));
+}
+
+TEST_CASE("plant: a wait on a station of another thread is answered by an SLMP write to it", "[plant]") {
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0},
+        "stations": [{"template": {}, "count": 2, "name": "s{i}", "tcp_port": 0}]})",
+                                 {"--threads", "2"}));
+    // The wait is sent first and answered only after the write.
+    auto waiter = TcpClient::open(sim.http_port());
+    REQUIRE(waiter.send("GET /api/stations/s2/devices/D100/wait?equals=9&timeout_ms=10000 HTTP/1.1\r\nHost: x\r\n"
+                        "Connection: close\r\n\r\n"));
+    auto s2 = TcpClient::open(tcp_of(sim, "s2"));
+    // The wait is registered when its answer is still missing after a round trip on s2's thread.
+    CHECK(show(ask(s2, kReadD100)) == show(read_answer(0)));
+    CHECK(show(ask(s2, write_d100(9))) == show(kWriteOk));
+    std::string data;
+    for (;;) {
+        auto got = waiter.recv_some(kReplyTimeout);
+        if (got.status != RecvStatus::Data) break;
+        data.append(got.data.begin(), got.data.end());
+    }
+    CHECK(data.find("200 OK") != std::string::npos);
+    CHECK(data.find("\"value\":9") != std::string::npos);
+}
+
+TEST_CASE("plant: stations on one port and many loopback addresses", "[plant]") {
+    auto port = free_port_on_127_0_1_1();
+    auto config = R"({"http": {"port": 0, "bind": "127.0.0.1"}, "stations": [{"template": {"profile": "R08CPU"},
+        "count": 5, "name": "line-{i}", "bind": "127.0.1.{i}", "tcp_port": )" + std::to_string(port) + "}]}";
+    SimProcess sim(plant_options(config));
+    for (int i = 1; i <= 5; ++i) {
+        auto address = "127.0.1." + std::to_string(i);
+        auto client = TcpClient::open(port, address.c_str());
+        CHECK(show(ask(client, write_d100(static_cast<std::uint16_t>(100 + i)))) == show(kWriteOk));
+    }
+    for (int i = 1; i <= 5; ++i) {
+        auto body = http_get(sim.http_port(), "/api/stations/line-" + std::to_string(i) + "/devices/D100").body;
+        CHECK(nlohmann::json::parse(body)["values"][0] == 100 + i);
+    }
+}
+
+TEST_CASE("plant: one-station options are refused, --check-config checks every station", "[plant]") {
+    TempDir dir;
+    auto file = dir.write("plant.json", R"({"stations": [{"name": "a", "tcp_port": 0}, {"name": "b", "profile": "R99CPU", "tcp_port": 0}]})");
+    auto refused = run_sim({"--config", file.string(), "--tcp-port", "5000"});
+    CHECK(refused.exit_code == 2);
+    CHECK(refused.err.find("--tcp-port sets one station") != std::string::npos);
+    auto checked = run_sim({"--check-config", file.string()});
+    CHECK(checked.exit_code == 2);
+    CHECK(checked.err.find("station 'b': ") != std::string::npos);
+    CHECK(checked.err.find("R99CPU") != std::string::npos);
+    auto good = dir.write("good.json", R"({"stations": [{"template": {}, "count": 50, "tcp_port": "20000+i"}]})");
+    auto ok = run_sim({"--check-config", good.string()});
+    CHECK(ok.exit_code == 0);
+    CHECK(ok.out.find("configuration OK") != std::string::npos);
+}
+
+TEST_CASE("plant: a lone station's ready file and routes are as before plants", "[plant]") {
+    SimProcess sim;
+    CHECK_FALSE(sim.ready().contains("stations"));
+    CHECK(sim.ready()["threads"] == 1);
+    CHECK(http_get(sim.http_port(), "/healthz").status == 200);
+    auto list = nlohmann::json::parse(http_get(sim.http_port(), "/api/stations").body);
+    REQUIRE(list.size() == 1);
+    CHECK(list[0]["name"] == "");
+    auto metrics = http_get(sim.http_port(), "/metrics").body;
+    CHECK(metrics.find("station=") == std::string::npos);
+}
+
+TEST_CASE("plant: the slmp CLI names a station and finds its port through the HTTP API", "[plant][cli]") {
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0},
+        "stations": [{"template": {}, "count": 3, "name": "p{i}", "tcp_port": 0, "udp_port": 0}]})"));
+    auto api = std::to_string(sim.http_port());
+    auto wrote = run_cli({"--plant-station", "p2", "--api-port", api, "write", "D100", "321"});
+    INFO(wrote.err);
+    CHECK(wrote.exit_code == 0);
+    CHECK(nlohmann::json::parse(http_get(sim.http_port(), "/api/stations/p2/devices/D100").body)["values"][0] == 321);
+    CHECK(nlohmann::json::parse(http_get(sim.http_port(), "/api/stations/p1/devices/D100").body)["values"][0] == 0);
+    auto read = run_cli({"--plant-station", "p2", "--api-port", api, "--udp", "--json", "read", "D100"});
+    CHECK(read.exit_code == 0);
+    CHECK(read.out.find("321") != std::string::npos);
+    auto unknown = run_cli({"--plant-station", "p9", "--api-port", api, "read", "D100"});
+    CHECK(unknown.exit_code == 2);
+    CHECK(unknown.err.find("has no station 'p9'") != std::string::npos);
+}
