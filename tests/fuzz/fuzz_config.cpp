@@ -1,4 +1,5 @@
-// JSON text -> the server configuration loader (and what the server then does
+// JSON text -> the server configuration loader, the plant loader (stations,
+// templates, placeholders: config/plant_config.hpp) (and what the server then does
 // with the result: profile, sizes, initial values, hardware, runtime
 // parameters) and -> the profile parser. config/config.hpp promises that every
 // mistake is a config::ConfigError; anything else escaping is a finding.
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "config/config.hpp"
+#include "config/plant_config.hpp"
 #include "devicemodel/cpu.hpp"
 #include "tests/fuzz/fuzz_check.hpp"
 
@@ -51,6 +53,10 @@ void expect_config_errors_only(const char* what, F&& f) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     expect_config_errors_only("parse_server_config", [&] { use(config::parse_server_config(text, "fuzz.json")); });
+    expect_config_errors_only("parse_plant_config", [&] {
+        auto plant = config::parse_plant_config(text, "fuzz.json", "");
+        for (std::size_t k = 0; k < plant.stations.size() && k < 4; ++k) use(plant.stations[k].server);
+    });
     expect_config_errors_only("parse_profile", [&] {
         auto profile = config::parse_profile(text, "fuzz-profile.json");
         devicemodel::Cpu cpu(profile.cpu);
