@@ -119,6 +119,7 @@ if [ "$load" -eq 1 ] && command -v podman >/dev/null; then
   step "podman load"
   # podman names an image loaded from a layout after the layout's path
   # (localhost/tmp/out/slmp-sim); it is renamed to ours.
+  previous=$(podman image inspect --format '{{.Id}}' "localhost/slmp-sim:$tag" 2>/dev/null || true)
   loaded=$(podman load -i "$layout" | sed -n 's/^Loaded image: //p' | tail -n 1)
   [ -n "$loaded" ] || fail "podman load printed no image name"
   podman tag "$loaded" "localhost/slmp-sim:$tag" "localhost/slmp-sim:latest"
@@ -126,6 +127,11 @@ if [ "$load" -eq 1 ] && command -v podman >/dev/null; then
     localhost/slmp-sim|localhost/slmp-sim:*) ;;
     *) podman untag "$loaded" "$loaded" ;;
   esac
+  # The build it replaces, unless something else still names it.
+  current=$(podman image inspect --format '{{.Id}}' "localhost/slmp-sim:$tag")
+  if [ -n "$previous" ] && [ "$previous" != "$current" ]; then
+    podman rmi "$previous" >/dev/null 2>&1 || true
+  fi
   echo "build.sh: podman has localhost/slmp-sim:$tag and localhost/slmp-sim:latest"
 fi
 
