@@ -10,7 +10,7 @@ packages=(g++ cmake ninja-build ccache libboost-dev libboost-program-options-dev
           python3-pytest python3-yaml   # the Python CI kit's suite and the CI examples' check (docs/ci.md)
           chromium    # the web monitor's browser test (tests/browser)
           tshark      # the Wireshark dissector's test (tests/wireshark)
-          debootstrap umoci podman   # the container image's build and test (tests/deploy, docs/deploy.md)
+          debootstrap umoci podman iproute2   # the container image's build and test (tests/deploy, docs/deploy.md)
           clang libclang-rt-14-dev)   # the sanitizer build and fuzzers (scripts/test-sanitizers.sh)
 command -v node >/dev/null 2>&1 || packages+=(nodejs)
 command -v npm >/dev/null 2>&1 || packages+=(npm)
