@@ -99,6 +99,7 @@ def in_image(*args):
 
 checks = ["/etc/slmp-sim/config.json"] + sorted(
     "/" + str(p.relative_to(rootfs)) for p in (rootfs / "usr/share/slmp-sim/examples/plants").glob("*.json"))
+print("--check-config in the image:", " ".join(checks))
 for config in checks:
     run = subprocess.run(in_image(*image["Entrypoint"], "--check-config", config), capture_output=True, text=True)
     report.check(run.returncode == 0, f"--check-config {config} in the image: exit {run.returncode}: {run.stderr.strip()}")
