@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # deploy/image/build.sh [--binary PATH] [--output DIR] [--tag TAG] [--mirror URL] [--no-load]
 #
-# Builds the slmp-sim container image as an OCI image layout (DIR/slmp-sim, one
-# image tagged TAG, as `podman load` wants it) without a container daemon or a registry, then loads it
-# into podman when podman is installed. What the Dockerfile builds, from a
-# binary that is already built:
+# Builds the slmp-sim container image as an OCI image layout (DIR/slmp-sim:
+# one image tagged TAG, as `podman load` wants it) without a container daemon
+# or a registry, then loads it into podman when podman is installed. What the
+# Dockerfile builds, from a binary that is already built:
 #
 #   layer 1  Debian 12 minbase + deploy/image/runtime-packages.txt + user
 #            slmp-sim (uid/gid 10001)       (base-rootfs.sh; cached, see there)
@@ -27,6 +27,10 @@ tag=""
 mirror=""
 load=1
 while [ $# -gt 0 ]; do
+  case "$1" in
+    --binary|--output|--tag|--mirror)
+      [ $# -ge 2 ] || { echo "build.sh: $1 needs a value (see --help)" >&2; exit 2; } ;;
+  esac
   case "$1" in
     --binary) binary="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
