@@ -31,6 +31,12 @@ if [ -f tests/interop/package.json ] && [ ! -d tests/interop/node_modules ]; the
   (cd tests/interop && npm ci --no-audit --no-fund --loglevel=error)
 fi
 
+# The Kubernetes API's JSON schemas for the manifests' test (tests/deploy).
+if [ -f tests/deploy/k8s_schema/package.json ] && [ ! -d tests/deploy/k8s_schema/node_modules ]; then
+  echo "setup: installing npm packages for tests/deploy/k8s_schema"
+  (cd tests/deploy/k8s_schema && npm ci --no-audit --no-fund --loglevel=error)
+fi
+
 # playwright-core for the browser test; it drives Debian's chromium and
 # downloads no browser of its own.
 if [ -f tests/browser/package.json ] && [ ! -d tests/browser/node_modules ]; then
