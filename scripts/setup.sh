@@ -10,6 +10,7 @@ packages=(g++ cmake ninja-build ccache libboost-dev libboost-program-options-dev
           python3-pytest python3-yaml   # the Python CI kit's suite and the CI examples' check (docs/ci.md)
           chromium    # the web monitor's browser test (tests/browser)
           tshark      # the Wireshark dissector's test (tests/wireshark)
+          debootstrap umoci podman iproute2   # the container image's build and test (tests/deploy, docs/deploy.md)
           clang libclang-rt-14-dev)   # the sanitizer build and fuzzers (scripts/test-sanitizers.sh)
 command -v node >/dev/null 2>&1 || packages+=(nodejs)
 command -v npm >/dev/null 2>&1 || packages+=(npm)
@@ -28,6 +29,12 @@ fi
 if [ -f tests/interop/package.json ] && [ ! -d tests/interop/node_modules ]; then
   echo "setup: installing npm packages for tests/interop"
   (cd tests/interop && npm ci --no-audit --no-fund --loglevel=error)
+fi
+
+# The Kubernetes API's JSON schemas for the manifests' test (tests/deploy).
+if [ -f tests/deploy/k8s_schema/package.json ] && [ ! -d tests/deploy/k8s_schema/node_modules ]; then
+  echo "setup: installing npm packages for tests/deploy/k8s_schema"
+  (cd tests/deploy/k8s_schema && npm ci --no-audit --no-fund --loglevel=error)
 fi
 
 # playwright-core for the browser test; it drives Debian's chromium and
