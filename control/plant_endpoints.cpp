@@ -32,6 +32,43 @@ Reply deferred(std::function<boost::asio::awaitable<Reply>()> later) {
     return reply;
 }
 
+// "press-*", "*-7", "press-1": '*' stands for any run of characters.
+bool glob_match(std::string_view pattern, std::string_view name) {
+    auto star = pattern.find('*');
+    if (star == std::string_view::npos) return pattern == name;
+    auto head = pattern.substr(0, star);
+    if (name.substr(0, head.size()) != head) return false;
+    auto rest = pattern.substr(star + 1);
+    for (auto from = head.size(); from <= name.size(); ++from)
+        if (glob_match(rest, name.substr(from))) return true;
+    return false;
+}
+
+// The stations a group request names: "stations": "press-*" or a list of names and patterns.
+std::vector<StationSide*> group(Plant& plant, const json& body) {
+    if (!body.is_object() || !body.contains("stations") || !body.contains("scenario") || !body["scenario"].is_object())
+        throw ApiError{Status::bad_request, "send {\"stations\": \"press-*\" (or a list of names), \"scenario\": {...}}"};
+    std::vector<std::string> patterns;
+    const auto& stations = body["stations"];
+    if (stations.is_string()) patterns.push_back(stations.get<std::string>());
+    else if (stations.is_array())
+        for (const auto& item : stations)
+            if (item.is_string()) patterns.push_back(item.get<std::string>());
+    if (patterns.empty())
+        throw ApiError{Status::bad_request, "\"stations\": give a name, a pattern such as \"press-*\", or a list of them"};
+    std::vector<StationSide*> chosen;
+    for (auto& side : plant.stations)
+        for (const auto& pattern : patterns)
+            if (glob_match(pattern, side->name)) {
+                chosen.push_back(side.get());
+                break;
+            }
+    if (chosen.empty())
+        throw ApiError{Status::not_found, "no station matches " + stations.dump() + "; GET /api/stations lists them"};
+    return chosen;
+}
+
+
 }  // namespace
 
 StationSide* Plant::find(std::string_view name) {
@@ -63,6 +100,52 @@ void add_plant_endpoints(Router& router, Plant& plant) {
         if (!side) throw ApiError{Status::not_found, "no station '" + request.captures[0] + "'; GET /api/stations lists them"};
         return deferred([side]() -> boost::asio::awaitable<Reply> {
             co_return json_reply(co_await on_station(*side, [side] { return summary(*side); }));
+        });
+    });
+    // A scenario (faults, triggers) on a group of stations at once, all or
+    // nothing: a partition of press-7 for 10 s, a power cycle of a line.
+    router.add(Verb::post, "/api/plant/scenarios", {}, [&plant](const ApiRequest& request) {
+        auto body = json::parse(request.body, nullptr, false);
+        auto chosen = group(plant, body);
+        auto scenario = body["scenario"].dump();
+        auto name = body["scenario"].value("name", std::string());
+        return deferred([chosen, scenario, name]() -> boost::asio::awaitable<Reply> {
+            auto started = json::array();
+            for (auto* side : chosen) {
+                auto reply = co_await on_station(*side, [side, &scenario] {
+                    return side->router.route(Verb::post, "/api/scenarios", scenario);
+                });
+                if (reply.status == Status::created) {
+                    started.push_back(side->name);
+                    continue;
+                }
+                for (const auto& done : started)   // all or nothing
+                    for (auto* undo : chosen)
+                        if (undo->name == done)
+                            co_await on_station(*undo, [undo, &name] {
+                                return undo->router.route(Verb::delete_, "/api/scenarios/" + name, "");
+                            });
+                auto error = json::parse(reply.body, nullptr, false);
+                auto message = error.is_object() ? error.value("error", reply.body) : reply.body;
+                co_return error_reply(reply.status, "station " + side->name + ": " + message +
+                                                        " (no station of the group started it)");
+            }
+            co_return json_reply(json{{"name", name}, {"stations", started}}, Status::created);
+        });
+    });
+    router.add(Verb::delete_, "/api/plant/scenarios/{name}", {}, [&plant](const ApiRequest& request) {
+        auto name = request.captures[0];
+        return deferred([&plant, name]() -> boost::asio::awaitable<Reply> {
+            auto stopped = json::array();
+            for (auto& side : plant.stations) {
+                auto reply = co_await on_station(*side, [&side, &name] {
+                    return side->router.route(Verb::delete_, "/api/scenarios/" + name, "");
+                });
+                if (reply.status == Status::ok) stopped.push_back(side->name);
+            }
+            if (stopped.empty())
+                co_return error_reply(Status::not_found, "no station runs a scenario '" + name + "'");
+            co_return json_reply(json{{"stopped", name}, {"stations", stopped}});
         });
     });
     if (!plant.named) return;   // one station: its own /metrics, without a station label

@@ -215,3 +215,48 @@ TEST_CASE("plant: the slmp CLI names a station and finds its port through the HT
     CHECK(unknown.exit_code == 2);
     CHECK(unknown.err.find("has no station 'p9'") != std::string::npos);
 }
+
+TEST_CASE("plant: a scenario on a group of stations, all or nothing, and stopped for the group", "[plant]") {
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0}, "stations": [
+        {"template": {}, "count": 2, "name": "line-{i}", "tcp_port": 0}, {"name": "other", "tcp_port": 0}]})",
+                                 {"--threads", "2"}));
+    auto sick = R"({"stations": "line-*", "scenario": {"name": "sick", "faults": [{"do": "end_code", "end_code": "C051"}]}})";
+    auto posted = http(sim.http_port(), "POST", "/api/plant/scenarios", sick);
+    CHECK(posted.status == 201);
+    CHECK(nlohmann::json::parse(posted.body) == nlohmann::json{{"name", "sick"}, {"stations", {"line-1", "line-2"}}});
+    const auto refused = show(hex("D00000FFFF03000B0051C000FFFF030001040000"));
+    for (const char* name : {"line-1", "line-2"}) {
+        auto client = TcpClient::open(tcp_of(sim, name));
+        CHECK(show(ask(client, kReadD100)) == refused);
+    }
+    auto other = TcpClient::open(tcp_of(sim, "other"));
+    CHECK(show(ask(other, kReadD100)) == show(read_answer(0)));
+
+    // "other" runs a scenario named "x": a group start of "x" over every station fails and leaves none running it.
+    REQUIRE(http(sim.http_port(), "POST", "/api/stations/other/scenarios", R"({"name": "x"})").status == 201);
+    auto clash = http(sim.http_port(), "POST", "/api/plant/scenarios", R"({"stations": "*", "scenario": {"name": "x"}})");
+    CHECK(clash.status == 409);
+    CHECK(clash.body.find("station other: a scenario named 'x' is already running") != std::string::npos);
+    for (const char* name : {"line-1", "line-2"}) {
+        auto list = nlohmann::json::parse(http_get(sim.http_port(), std::string("/api/stations/") + name + "/scenarios").body);
+        REQUIRE(list["scenarios"].size() == 1);
+        CHECK(list["scenarios"][0]["name"] == "sick");
+    }
+
+    auto stopped = http(sim.http_port(), "DELETE", "/api/plant/scenarios/sick");
+    CHECK(stopped.status == 200);
+    CHECK(nlohmann::json::parse(stopped.body)["stations"] == nlohmann::json{"line-1", "line-2"});
+    auto line1 = TcpClient::open(tcp_of(sim, "line-1"));
+    CHECK(show(ask(line1, kReadD100)) == show(read_answer(0)));
+    CHECK(http(sim.http_port(), "DELETE", "/api/plant/scenarios/sick").status == 404);
+    CHECK(http(sim.http_port(), "POST", "/api/plant/scenarios", R"({"stations": "nope-*", "scenario": {"name": "y"}})").status == 404);
+}
+
+TEST_CASE("plant: the shipped example plants check out", "[plant]") {
+    for (const char* file : {"press-line.json", "one-port-many-addresses.json"}) {
+        auto path = std::filesystem::path(SLMP_SOURCE_DIR) / "examples/plants" / file;
+        auto result = run_sim({"--check-config", path.string()}, std::chrono::seconds(60));
+        INFO(file << ": " << result.err);
+        CHECK(result.exit_code == 0);
+    }
+}
