@@ -5,6 +5,9 @@
 
 #include <netinet/in.h>
 
+#include <atomic>
+#include <thread>
+
 #include "cli_support.hpp"
 #include "frames.hpp"
 #include "http_client.hpp"
@@ -259,4 +262,112 @@ TEST_CASE("plant: the shipped example plants check out", "[plant]") {
         INFO(file << ": " << result.err);
         CHECK(result.exit_code == 0);
     }
+}
+
+namespace {
+
+// 4E binary read of D100 with serial `serial`, and its answer with `value`.
+Bytes read_d100_4e(std::uint16_t serial) {
+    return hex("5400" + hex_digits(serial & 0xFF, 2) + hex_digits(serial >> 8, 2) +
+               "000000FFFF03000C00100001040000640000A80100");
+}
+Bytes answer_4e(std::uint16_t serial, std::uint16_t value) {
+    return hex("D400" + hex_digits(serial & 0xFF, 2) + hex_digits(serial >> 8, 2) + "000000FFFF030004000000" +
+               hex_digits(value & 0xFF, 2) + hex_digits(value >> 8, 2));
+}
+
+}  // namespace
+
+TEST_CASE("plant: 200 stations from a template, each its own CPU over SLMP, HTTP and metrics", "[plant]") {
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0}, "stations": [
+        {"template": {"profile": "R08CPU"}, "count": 100, "name": "a{i}", "tcp_port": 0},
+        {"template": {"profile": "R04CPU"}, "count": 100, "name": "b{i}", "tcp_port": 0}]})",
+                                 {"--threads", "2"}));
+    REQUIRE(sim.ready()["stations"].size() == 200);
+    std::vector<std::string> names;
+    for (const auto& s : sim.ready()["stations"]) names.push_back(s["name"]);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        auto client = TcpClient::open(tcp_of(sim, names[k]));
+        auto type = ask(client, hex("500000FFFF03000600100001010000"));
+        REQUIRE(type.size() == 29);
+        CHECK(std::string(type.begin() + 11, type.begin() + 17) == (names[k][0] == 'a' ? "R08CPU" : "R04CPU"));
+        CHECK(show(ask(client, write_d100(static_cast<std::uint16_t>(1000 + k)))) == show(kWriteOk));
+    }
+    // Each write landed in its own station only.
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        auto client = TcpClient::open(tcp_of(sim, names[k]));
+        CHECK(show(ask(client, kReadD100)) == show(read_answer(static_cast<std::uint16_t>(1000 + k))));
+        auto body = http_get(sim.http_port(), "/api/stations/" + names[k] + "/devices/D100").body;
+        CHECK(nlohmann::json::parse(body)["values"][0] == 1000 + k);
+    }
+    auto metrics = http_get(sim.http_port(), "/metrics").body;
+    for (const auto& name : names)
+        CHECK(metrics.find("slmp_requests_total{station=\"" + name + "\",transport=\"tcp\",command=\"1401\"") !=
+              std::string::npos);
+}
+
+TEST_CASE("plant: a partitioned station answers nothing until healed; the others answer", "[plant]") {
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0},
+        "stations": [{"template": {}, "count": 2, "name": "press-{i}", "tcp_port": 0}]})",
+                                 {"--threads", "2"}));
+    auto partition = R"({"stations": "press-2", "scenario": {"name": "partition", "faults": [{"do": "no_response", "until_ms": 600000}]}})";
+    REQUIRE(http(sim.http_port(), "POST", "/api/plant/scenarios", partition).status == 201);
+    auto cut = TcpClient::open(tcp_of(sim, "press-2"));
+    auto fine = TcpClient::open(tcp_of(sim, "press-1"));
+    REQUIRE(cut.send(read_d100_4e(1)));                                      // swallowed
+    CHECK(show(ask(fine, read_d100_4e(2))) == show(answer_4e(2, 0)));        // press-1 is unaffected
+    REQUIRE(http(sim.http_port(), "DELETE", "/api/plant/scenarios/partition").status == 200);
+    // The first answer press-2 gives is to the request after the heal: serial 1 was never answered.
+    CHECK(show(ask(cut, read_d100_4e(3))) == show(answer_4e(3, 0)));
+}
+
+TEST_CASE("plant: clients of one station on several threads see every request atomic, no write lost", "[plant]") {
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0},
+        "stations": [{"name": "hot", "tcp_port": 0}, {"name": "other", "tcp_port": 0}]})",
+                                 {"--threads", "2"}));
+    auto port = tcp_of(sim, "hot");
+    constexpr int kClients = 8, kRounds = 40;
+    // Writers fill D0-D959 (overlapping: all of them) with one value per request,
+    // and D1000+client (disjoint) with their round; readers check no block is torn.
+    auto block_write = [](std::uint16_t value) {
+        std::string data;
+        for (int w = 0; w < 960; ++w) data += hex_digits(value & 0xFF, 2) + hex_digits(value >> 8, 2);
+        return hex("500000FFFF0300" + hex_digits((12 + 1920) & 0xFF, 2) + hex_digits((12 + 1920) >> 8, 2) +
+                   "100001140000000000A8C003" + data);
+    };
+    const Bytes block_read = hex("500000FFFF03000C00100001040000000000A8C003");
+    std::vector<std::thread> threads;
+    std::atomic<int> torn{0}, failed{0};
+    for (int c = 0; c < kClients; ++c)
+        threads.emplace_back([&, c] {
+            auto client = TcpClient::open(port);
+            for (int r = 1; r <= kRounds; ++r) {
+                Bytes answer;
+                std::string why;
+                auto value = static_cast<std::uint16_t>(c * 1000 + r);
+                auto request = c % 2 == 0 ? block_write(value) : block_read;
+                if (!client.send(request) || !client.response(&answer, kReplyTimeout, &why)) {
+                    ++failed;
+                    return;
+                }
+                if (c % 2 == 1) {
+                    if (answer.size() != 11 + 1920) ++failed;
+                    else
+                        for (std::size_t w = 1; w < 960; ++w)
+                            if (answer[11 + 2 * w] != answer[11] || answer[12 + 2 * w] != answer[12]) {
+                                ++torn;
+                                break;
+                            }
+                }
+                auto own = static_cast<std::uint16_t>(1000 + c);
+                auto single = hex("500000FFFF03000E00100001140000" + hex_digits(own & 0xFF, 2) +
+                                  hex_digits(own >> 8, 2) + "00A80100" + hex_digits(r & 0xFF, 2) + hex_digits(r >> 8, 2));
+                if (!client.send(single) || !client.response(&answer, kReplyTimeout, &why)) ++failed;
+            }
+        });
+    for (auto& t : threads) t.join();
+    CHECK(failed == 0);
+    CHECK(torn == 0);
+    auto last = nlohmann::json::parse(http_get(sim.http_port(), "/api/stations/hot/devices/D1000?count=8").body);
+    CHECK(last["values"] == nlohmann::json(std::vector<int>(kClients, kRounds)));
 }
