@@ -9,6 +9,7 @@ For each file:
   where the argument says; the Service selects the Deployment's pods and each
   of its target ports is a container port;
 - every configuration in the ConfigMap passes `slmp-sim --check-config`;
+- Prometheus scrape annotations name /metrics on the HTTP port;
 - the liveness probe is GET /healthz and the readiness probe GET /readyz on the
   container port that is the configuration's HTTP port;
 - the configuration is started unchanged in a network namespace of its own (as
@@ -124,6 +125,11 @@ def check_manifest(path, work):
         entry = container_port(container, get.get("port"))
         report.check(entry is not None and entry["containerPort"] == http_port and entry.get("protocol", "TCP") == "TCP",
                      f"{name}: {probe} port {get.get('port')} is the HTTP port {http_port}")
+    # Prometheus scrapes /metrics on the HTTP port.
+    annotations = deployment["spec"]["template"]["metadata"].get("annotations", {})
+    report.equal(annotations.get("prometheus.io/scrape"), "true", f"{name}: prometheus.io/scrape")
+    report.equal(annotations.get("prometheus.io/path"), "/metrics", f"{name}: prometheus.io/path")
+    report.equal(annotations.get("prometheus.io/port"), str(http_port), f"{name}: prometheus.io/port is the HTTP port")
     for port in service["spec"]["ports"]:
         entry = container_port(container, port.get("targetPort", port["port"]))
         report.check(entry is not None and entry.get("protocol", "TCP") == port.get("protocol", "TCP"),
