@@ -55,6 +55,7 @@ HttpServer::HttpServer(asio::io_context& io, const std::vector<ServedStation>& s
 }
 
 void HttpServer::stop() {
+    stopping_ = true;
     boost::system::error_code ec;
     acceptor_.close(ec);
     // Waits and event streams end on their stations' threads; the sockets
@@ -173,6 +174,7 @@ asio::awaitable<void> HttpServer::serve(tcp::socket socket) {
                                                     asio::use_awaitable);
                 }
                 lent_.erase(registered);
+                if (stopping_) keep_alive = false;   // stop() left this connection to end here
             }
             spdlog::debug("HTTP {} {} -> {}", std::string(request.method_string()), std::string(request.target()),
                           static_cast<unsigned>(reply.status));

@@ -41,7 +41,8 @@ private:
     boost::asio::ip::tcp::acceptor acceptor_;
     std::uint16_t port_ = 0;
     std::unordered_set<boost::asio::ip::tcp::socket*> sockets_;   // open connections, closed by stop()
-    std::unordered_set<boost::asio::ip::tcp::socket*> lent_;      // streaming on a station's thread now
+    std::unordered_set<boost::asio::ip::tcp::socket*> lent_;      // in a station's hands now (a wait, an event stream)
+    bool stopping_ = false;                                        // stop(): lent connections close when they come back
 };
 
 }  // namespace slmp::control

@@ -76,12 +76,19 @@ private:
     std::filesystem::path path_;
 };
 
+// The slmp-sim under test: this tree's build, or $SLMP_SIM_UNDER_TEST (the
+// ThreadSanitizer build of scripts/test-tsan.sh runs these tests against its own).
+inline std::string sim_binary() {
+    const char* other = std::getenv("SLMP_SIM_UNDER_TEST");
+    return other && *other ? other : SLMP_SIM_BINARY;
+}
+
 namespace detail {
 
 // fork + execv with stdout/stderr redirected to files. Returns the child's pid.
 // `binary` defaults to slmp-sim; the CLI tests run the slmp client the same way.
 inline pid_t spawn(const std::vector<std::string>& args, const std::filesystem::path& out_file,
-                   const std::filesystem::path& err_file, const std::string& binary = SLMP_SIM_BINARY) {
+                   const std::filesystem::path& err_file, const std::string& binary = sim_binary()) {
     std::vector<std::string> argv_storage;
     argv_storage.push_back(binary);
     argv_storage.insert(argv_storage.end(), args.begin(), args.end());
@@ -155,7 +162,7 @@ inline RunResult run_binary(const std::string& binary, const std::vector<std::st
 // Runs slmp-sim with `args` to completion (bounded by `timeout`; killed after it).
 inline RunResult run_sim(const std::vector<std::string>& args,
                          std::chrono::milliseconds timeout = std::chrono::seconds(10)) {
-    return run_binary(SLMP_SIM_BINARY, args, timeout);
+    return run_binary(sim_binary(), args, timeout);
 }
 
 // Non-empty lines of `text`.
