@@ -21,6 +21,7 @@ build=build
 args=("$@")
 for ((i = 0; i < ${#args[@]}; i++)); do
   if [ "${args[i]}" = "--build" ] && [ $((i + 1)) -lt ${#args[@]} ]; then build=${args[i + 1]}; fi
+  if [[ ${args[i]} == --build=* ]]; then build=${args[i]#--build=}; fi
 done
 
 if [ ! -f "$build/CMakeCache.txt" ]; then
