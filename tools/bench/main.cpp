@@ -1,16 +1,22 @@
-// slmp-bench: an SLMP load generator. See docs/bench.md.
+// slmp-bench: an SLMP load generator, and with --baseline-server the
+// cheapest SLMP server to compare a server with. See docs/bench.md.
 //
 // Exit status: 0 when the run completed without errors, 1 when it completed
 // with errors (or no answered request, or could not run), 2 on bad usage.
+#include <cstring>
 #include <exception>
 #include <iostream>
 
+#include "tools/bench/baseline_server.hpp"
 #include "tools/bench/options.hpp"
 #include "tools/bench/report.hpp"
 #include "tools/bench/run.hpp"
 
 int main(int argc, char** argv) {
     using namespace slmp::bench;
+    // The baseline server is a mode of its own with its own options.
+    for (int i = 1; i < argc; ++i)
+        if (std::strcmp(argv[i], "--baseline-server") == 0) return baseline::baseline_main(argc, argv);
     int exit_code = 0;
     auto options = parse_options(argc, argv, exit_code);
     if (!options) return exit_code;

@@ -1,16 +1,24 @@
 // slmp-bench command line: what to send, where, how hard and for how long.
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "tools/bench/targets.hpp"
 
 namespace slmp::bench {
 
 struct Options {
     std::string host = "127.0.0.1";
     std::uint16_t port = 5000;
+    // Where connection i goes: targets[i % size]. --host/--port make one
+    // target; --targets (text kept for the report) any number.
+    std::vector<Target> targets;
+    std::string targets_text;
     bool udp = false;
     bool ascii = false;
     bool e4 = false;                  // 4E frames (serial numbers); required for depth > 1
@@ -24,6 +32,7 @@ struct Options {
     std::string device;               // start device for every operation; empty = defaults
     bool json = false;
     bool allow_remote = false;        // a non-loopback target must be asked for explicitly
+    pid_t server_pid = 0;             // sample this process's CPU time over the run; 0 = none
 };
 
 // Parses and validates argv. Returns nullopt when the program should exit now

@@ -61,6 +61,42 @@ void json_operation(std::ostream& out, const OperationResult& r, double seconds)
         << ",\"max\":" << format("%.1f", l.max) << ",\"mean\":" << format("%.1f", l.mean) << "}}";
 }
 
+// Server CPU per answered request, in microseconds.
+double us_per_request(const Results& r) {
+    return r.total.ok > 0 ? r.cpu.server_s * 1e6 / static_cast<double>(r.total.ok) : 0.0;
+}
+
+double cores(double cpu_s, double wall_s) { return wall_s > 0 ? cpu_s / wall_s : 0.0; }
+
+void table_cpu(std::ostream& out, const Options& options, const Results& r) {
+    if (options.server_pid <= 0) return;
+    if (!r.cpu.measured) {
+        out << "\nserver CPU: not measured (process " << options.server_pid << " ended, or the run did not get past its warm-up)\n";
+        return;
+    }
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "\nserver CPU (pid %d): %.2f s in %.2f s (%.2f cores), %.2f us per request; client CPU %.2f s (%.2f cores)\n",
+                  static_cast<int>(options.server_pid), r.cpu.server_s, r.cpu.wall_s, cores(r.cpu.server_s, r.cpu.wall_s),
+                  us_per_request(r), r.cpu.client_s, cores(r.cpu.client_s, r.cpu.wall_s));
+    out << line;
+}
+
+void json_cpu(std::ostream& out, const Options& options, const Results& r) {
+    if (options.server_pid <= 0) return;
+    out << ",\"cpu\":";
+    if (!r.cpu.measured) {
+        out << "null";
+        return;
+    }
+    out << "{\"server_pid\":" << options.server_pid << ",\"wall_s\":" << format("%.3f", r.cpu.wall_s)
+        << ",\"server_s\":" << format("%.3f", r.cpu.server_s)
+        << ",\"server_cores\":" << format("%.3f", cores(r.cpu.server_s, r.cpu.wall_s))
+        << ",\"server_us_per_request\":" << format("%.3f", us_per_request(r))
+        << ",\"client_s\":" << format("%.3f", r.cpu.client_s)
+        << ",\"client_cores\":" << format("%.3f", cores(r.cpu.client_s, r.cpu.wall_s)) << "}";
+}
+
 }  // namespace
 
 void print_table(std::ostream& out, const Options& options, const Results& results) {
@@ -82,12 +118,13 @@ void print_table(std::ostream& out, const Options& options, const Results& resul
         for (auto [code, n] : e.end_codes) out << "  (end code " << protocol::hex4(code) << " x" << n << ")";
         out << '\n';
     }
+    table_cpu(out, options, results);
 }
 
 void print_json(std::ostream& out, const Options& options, const Results& results) {
     std::string mix;
     for (const auto& m : options.mix) mix += (mix.empty() ? "" : ",") + json_string(m);
-    out << "{\"target\":" << json_string(results.target) << ",\"codec\":\"" << (options.ascii ? "ascii" : "binary")
+    out << "{\"target\":" << json_string(results.target) << ",\"targets\":" << results.targets << ",\"codec\":\"" << (options.ascii ? "ascii" : "binary")
         << "\",\"frame\":\"" << (options.e4 ? "4E" : "3E") << "\",\"connections\":" << options.connections
         << ",\"depth\":" << options.depth << ",\"mix\":[" << mix << "]"
         << ",\"warmup_s\":" << format("%.3f", options.warmup) << ",\"seconds\":" << format("%.3f", results.seconds)
@@ -100,7 +137,9 @@ void print_json(std::ostream& out, const Options& options, const Results& result
         out << (i ? "," : "") << json_string(results.operations[i].name) << ":";
         json_operation(out, results.operations[i], results.seconds);
     }
-    out << "}}\n";
+    out << "}";
+    json_cpu(out, options, results);
+    out << "}\n";
 }
 
 }  // namespace slmp::bench

@@ -1,12 +1,13 @@
 // How the load is generated, and why this way.
 //
 // All connections run as Asio coroutines on ONE io_context driven by ONE
-// thread. The target machine has two cores and the simulator serves all its
-// sessions on one core thread; a single-threaded client leaves it the other
+// thread. The target machine has two cores and a station of the simulator is
+// served by one thread; a single-threaded client leaves the server the other
 // core, instead of N blocking threads fighting it for CPU, so what we measure
 // is the server and the loopback stack rather than our own scheduling. The
 // price: when the client thread is saturated its queueing shows up in the
-// latencies, so watch the client's CPU (e.g. `time`) at high connection counts.
+// latencies, so watch the client's CPU (--server-pid reports it) at high
+// connection counts.
 //
 // Each connection is closed-loop: it sends the next request only when a
 // response (or a timeout) frees a slot, so latencies do not include the wait a
@@ -17,10 +18,13 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/steady_timer.hpp>
 
+#include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "tools/bench/connection.hpp"
 #include "tools/bench/control.hpp"
+#include "tools/bench/process_cpu.hpp"
 #include "tools/bench/workload.hpp"
 
 namespace slmp::bench {
@@ -36,16 +40,61 @@ Clock::duration seconds(double s) {
 // Resolves without touching the network (numeric addresses and "localhost").
 // Refuses anything but loopback unless --allow-remote: a load generator must
 // never hit a real PLC by accident.
-asio::ip::address resolve(asio::io_context& io, const Options& options) {
+asio::ip::address resolve(asio::io_context& io, const Target& target, bool allow_remote) {
     asio::ip::tcp::resolver resolver(io);
     boost::system::error_code ec;
-    auto results = resolver.resolve(options.host, std::to_string(options.port), ec);
-    if (ec || results.empty()) throw std::invalid_argument("cannot resolve --host '" + options.host + "'");
+    auto results = resolver.resolve(target.host, std::to_string(target.port), ec);
+    if (ec || results.empty()) throw std::invalid_argument("cannot resolve host '" + target.host + "'");
     auto address = results.begin()->endpoint().address();
-    if (!address.is_loopback() && !options.allow_remote)
-        throw std::invalid_argument("--host " + options.host + " (" + address.to_string() +
+    if (!address.is_loopback() && !allow_remote)
+        throw std::invalid_argument("host " + target.host + " (" + address.to_string() +
                                     ") is not a loopback address; add --allow-remote if you really mean it");
     return address;
+}
+
+struct Endpoint {
+    asio::ip::address address;
+    std::uint16_t port;
+};
+
+// Every target's address, each host looked up once (a range is one host).
+std::vector<Endpoint> resolve_all(asio::io_context& io, const Options& options) {
+    std::map<std::string, asio::ip::address> hosts;
+    std::vector<Endpoint> endpoints;
+    for (const auto& target : options.targets) {
+        auto known = hosts.find(target.host);
+        if (known == hosts.end()) known = hosts.emplace(target.host, resolve(io, target, options.allow_remote)).first;
+        endpoints.push_back({known->second, target.port});
+    }
+    return endpoints;
+}
+
+std::string describe_target(const Options& options, const std::vector<Endpoint>& endpoints) {
+    std::string transport = options.udp ? "udp " : "tcp ";
+    if (options.targets_text.empty())
+        return transport + endpoints[0].address.to_string() + ":" + std::to_string(endpoints[0].port);
+    return transport + options.targets_text + " (" + std::to_string(endpoints.size()) + " targets)";
+}
+
+// The server's and our own CPU time at one moment (--server-pid).
+struct CpuSample {
+    std::optional<double> server_s;
+    double client_s = 0;
+    Clock::time_point at;
+};
+
+CpuSample sample_cpu(pid_t server) {
+    return {process_cpu_seconds(server), own_cpu_seconds(), Clock::now()};
+}
+
+CpuUse cpu_between(const CpuSample& from, const CpuSample& to) {
+    CpuUse use;
+    if (!from.server_s || !to.server_s) return use;
+    use.measured = true;
+    use.server_s = *to.server_s - *from.server_s;
+    use.client_s = to.client_s - from.client_s;
+    use.wall_s = std::chrono::duration<double>(to.at - from.at).count();
+    return use;
 }
 
 OperationResult summarize(std::string name, Recorder recorder) {
@@ -62,7 +111,7 @@ OperationResult summarize(std::string name, Recorder recorder) {
 
 Results run_benchmark(const Options& options) {
     asio::io_context io(1);
-    auto address = resolve(io, options);
+    auto endpoints = resolve_all(io, options);
     Workload workload = make_workload(options);
 
     auto start = Clock::now();
@@ -71,8 +120,21 @@ Results run_benchmark(const Options& options) {
                    RunControl(start, seconds(options.warmup), measure_for, options.requests, seconds(options.timeout)),
                    std::vector<Recorder>(workload.operations.size()), {}, options.connections, {}};
 
-    for (unsigned i = 0; i < options.connections; ++i)
-        start_connection(io.get_executor(), state, i, options.udp, address, options.port);
+    // The server's CPU is counted from the end of the warm-up, like the requests.
+    CpuSample cpu_start;
+    asio::steady_timer cpu_timer(io);
+    if (options.server_pid > 0) {
+        cpu_timer.expires_at(state.control.measure_start());
+        cpu_timer.async_wait([&](boost::system::error_code ec) {
+            if (!ec) cpu_start = sample_cpu(options.server_pid);
+        });
+    }
+
+    // Round-robin: connection i goes to target i mod the number of targets.
+    for (unsigned i = 0; i < options.connections; ++i) {
+        const Endpoint& to = endpoints[i % endpoints.size()];
+        start_connection(io.get_executor(), state, i, options.udp, to.address, to.port);
+    }
 
     // Belt and braces: connections end by themselves within one timeout of the
     // end, but never let a bug turn into a hang.
@@ -85,12 +147,16 @@ Results run_benchmark(const Options& options) {
             io.stop();
         });
     }
-    state.all_done = [&] { hard_stop.cancel(); };
+    state.all_done = [&] {
+        hard_stop.cancel();
+        cpu_timer.cancel();   // only pending when the run ended before its warm-up did
+    };
     io.run();
 
     Results results;
-    results.target = std::string(options.udp ? "udp " : "tcp ") + address.to_string() + ":" +
-                     std::to_string(options.port);
+    if (options.server_pid > 0) results.cpu = cpu_between(cpu_start, sample_cpu(options.server_pid));
+    results.target = describe_target(options, endpoints);
+    results.targets = endpoints.size();
     results.seconds = state.control.measured_seconds();
     results.sent = state.control.measured_sent();
     results.fatal = state.fatal;
