@@ -117,7 +117,7 @@ def converse_1e(tcp_port, udp_port):
     each answer's length is the one the exchange expects."""
     d100 = bytes([100, 0, 0, 0, 0x20, 0x44])      # D100: number (4), code "D " (2)
     m0 = bytes([0, 0, 0, 0, 0x20, 0x4D])          # M0
-    with socket.create_connection(("127.0.0.1", tcp_port)) as s:
+    with socket.create_connection(("127.0.0.1", tcp_port), timeout=10) as s:
         exchanges = [
             (bytes([0x03, 0xFF, 0x0A, 0x00]) + d100 + bytes([3, 0, 1, 0, 2, 0, 3, 0]), 2),   # write D100-D102
             (bytes([0x01, 0xFF, 0x0A, 0x00]) + d100 + bytes([3, 0]), 8),                    # read them
@@ -149,10 +149,10 @@ def converse_ext(tcp_port):
     """A station-number-extended session: write and read D100 (station FF,
     extended 0000), the own station by its extended number (7C, FFFF), and
     another station (7C, 0005) answered 4A02 with its error information."""
-    with socket.create_connection(("127.0.0.1", tcp_port)) as s:
+    with socket.create_connection(("127.0.0.1", tcp_port), timeout=10) as s:
         def exchange(frame):
             s.sendall(frame)
-            head = read_exactly(s, 18)
+            head = read_exactly(s, 16)
             read_exactly(s, int.from_bytes(head[-2:], "little"))
         exchange(frame_ext(0x1234, 0x1401, 0x0000, bytes([100, 0, 0, 0xA8, 2, 0, 0x34, 0x12, 0x78, 0x56])))
         exchange(frame_ext(0x1235, 0x0401, 0x0000, bytes([100, 0, 0, 0xA8, 2, 0]), station=0x7C, extended=0xFFFF))

@@ -206,6 +206,35 @@ local DEVICES = {
     {"G", 0x00AB, 171, "G*", "G***", 10, "buffer memory"},
     {"HG", 0x002E, -1, "", "HG**", 10, "CPU buffer memory fixed-cycle area"},
 }
+
+-- [1E command] = {name, command, subcommand, layout, response carries bit data}
+local COMMANDS_1E = {
+    [0x00] = {"Batch Read (bit units)", 0x0401, 0x0001, "read", true},
+    [0x01] = {"Batch Read (word units)", 0x0401, 0x0000, "read", false},
+    [0x02] = {"Batch Write (bit units)", 0x1401, 0x0001, "write_bits", false},
+    [0x03] = {"Batch Write (word units)", 0x1401, 0x0000, "write_words", false},
+    [0x04] = {"Test (random write, bit units)", 0x1402, 0x0001, "test_bits", false},
+    [0x05] = {"Test (random write, word units)", 0x1402, 0x0000, "test_words", false},
+    [0x07] = {"Monitor Device Registration (word units)", 0x0801, 0x0000, "device_list", false},
+    [0x09] = {"Monitor (word units)", 0x0802, 0x0000, "header", false},
+    [0x13] = {"Remote RUN", 0x1001, 0x0000, "header", false},
+    [0x14] = {"Remote STOP", 0x1002, 0x0000, "header", false},
+    [0x15] = {"PC Type Read", 0x0101, 0x0000, "header", false},
+    [0x16] = {"Loopback Test", 0x0619, 0x0000, "loopback", false},
+}
+-- [1E end code * 0x100 + abnormal code (after 5B; else 0)] = meaning
+local END_CODES_1E = {
+    [0x0000] = "normal completion",
+    [0x5000] = "command or request content not as specified",
+    [0x5400] = "ASCII data that does not convert to binary",
+    [0x5500] = "write during RUN not allowed",
+    [0x5600] = "device specification wrong",
+    [0x5700] = "points or device range exceeded",
+    [0x5B10] = "PC No. error: not the own station",
+    [0x5B11] = "mode error: the CPU cannot do it now",
+    [0x5B18] = "remote error: remote operation refused",
+    [0x6000] = "monitoring timer expired",
+}
 -- tables:end
 
 -- Device codes to devices, for both forms and both data codes.
