@@ -63,7 +63,8 @@ asio::awaitable<void> UdpListener::serve_later(std::vector<std::uint8_t> datagra
     std::optional<station::Service> service = model;
     if (model) {
         while (scan.clock().now() < model->at && !scan.stopped()) co_await scan.until_end_or(std::nullopt, model->at);
-    } else if (const auto queued = station_.next_request(datagram, policy_, session_); queued && queued->start == 0) {
+    } else if (const auto queued = station_.next_request(datagram, policy_, session_);
+               station_.timing_mode() == config::TimingMode::EndOfScan && queued && queued->start == 0) {
         // end_of_scan: the END after the arrival, or the monitoring timer first.
         const auto seen = scan.scans();
         std::optional<std::chrono::steady_clock::time_point> deadline;

@@ -3,6 +3,8 @@
 // them to Station::handle() and whether the monitoring timer ran out first.
 #include "station/station.hpp"
 
+#include <algorithm>
+
 #include "protocol/error_response.hpp"
 #include "station/response_timing.hpp"
 #include "station/scan_loop.hpp"
