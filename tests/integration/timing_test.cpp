@@ -260,7 +260,7 @@ TEST_CASE("model: a write executes when its answer leaves, not when it arrives",
     CHECK(show(response_of(other)) == show(expected_response(kBin, word_data(kBin, {5}))));
 }
 
-TEST_CASE("1E frames: end_of_scan answers at END; model's monitoring timer answers 60", "[timing][1E]") {
+TEST_CASE("1E frames: end_of_scan answers at END, and the model monitoring timer answers 60", "[timing][1E]") {
     // Batch read (01) / write (03) of D0, PC No. FF (docs/frames.md).
     const Bytes read_d0 = hex("01 FF 0A 00 00 00 00 00 20 44 01 00");
     const Bytes write_d0 = hex("03 FF 01 00 00 00 00 00 20 44 01 00 05 00");   // timer 1 = 250 ms
