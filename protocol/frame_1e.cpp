@@ -183,6 +183,22 @@ EndCode1E end_code_1e(EndCode code) {
     return {0x5B, 0x11};   // mode error: the CPU cannot do it now (Busy CEE0 and the rest)
 }
 
+// The meanings of the codes end_code_1e() gives (docs/frames.md).
+constexpr std::array kEndCodeTexts1E = {
+    EndCodeText1E{0x00, std::nullopt, "normal completion"},
+    EndCodeText1E{0x50, std::nullopt, "command or request content not as specified"},
+    EndCodeText1E{0x54, std::nullopt, "ASCII data that does not convert to binary"},
+    EndCodeText1E{0x55, std::nullopt, "write during RUN not allowed"},
+    EndCodeText1E{0x56, std::nullopt, "device specification wrong"},
+    EndCodeText1E{0x57, std::nullopt, "points or device range exceeded"},
+    EndCodeText1E{0x5B, 0x10, "PC No. error: not the own station"},
+    EndCodeText1E{0x5B, 0x11, "mode error: the CPU cannot do it now"},
+    EndCodeText1E{0x5B, 0x18, "remote error: remote operation refused"},
+    EndCodeText1E{0x60, std::nullopt, "monitoring timer expired"},
+};
+
+std::span<const EndCodeText1E> all_end_codes_1e() { return kEndCodeTexts1E; }
+
 std::vector<std::uint8_t> encode_response_1e(const FrameHeader& request, std::span<const std::uint8_t> data) {
     FieldWriter w(request.codec);
     w.u8(static_cast<std::uint8_t>(request.command_1e | 0x80));

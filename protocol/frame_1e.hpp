@@ -62,6 +62,14 @@ struct EndCode1E {
     std::optional<std::uint8_t> abnormal;
 };
 EndCode1E end_code_1e(EndCode code);
+// What each 1E end code (and abnormal code after 5B) that end_code_1e()
+// gives means: the Wireshark dissector's table (test_wireshark_tables.cpp).
+struct EndCodeText1E {
+    std::uint8_t code;
+    std::optional<std::uint8_t> abnormal;
+    std::string_view meaning;
+};
+std::span<const EndCodeText1E> all_end_codes_1e();
 
 // Responses: subheader | 80, end code, data — or the error end code (and the
 // abnormal code after 5B).

@@ -6,11 +6,10 @@ namespace slmp::server {
 
 namespace asio = boost::asio;
 
-Outbox::Outbox(asio::ip::tcp::socket& socket, station::ScanLoop* clock)
-    : socket_(socket), clock_(clock), timer_(socket.get_executor()), hold_timer_(socket.get_executor()) {}
+Outbox::Outbox(asio::ip::tcp::socket& socket)
+    : socket_(socket), timer_(socket.get_executor()), hold_timer_(socket.get_executor()) {}
 
-void Outbox::add(std::vector<std::uint8_t> response, const scenarios::Delivery& delivery,
-                 std::optional<std::chrono::steady_clock::time_point> release) {
+void Outbox::add(std::vector<std::uint8_t> response, const scenarios::Delivery& delivery) {
     if (group_size_ == 0 && delivery.coalesce > 1) {
         // This response opens a coalescing group of `coalesce` responses;
         // responses already queued (same read) ride along, so the order holds.
@@ -18,7 +17,7 @@ void Outbox::add(std::vector<std::uint8_t> response, const scenarios::Delivery& 
         hold_until_ = std::chrono::steady_clock::now() + delivery.hold;
         released_ = false;
     }
-    items_.push_back({std::move(response), delivery, clock_ ? release : std::nullopt});
+    items_.push_back({std::move(response), delivery});
     if (group_size_ > 0 && items_.size() >= group_size_) released_ = true;
 }
 
@@ -77,13 +76,12 @@ asio::awaitable<void> Outbox::send(boost::system::error_code& ec) {
         auto item = std::move(items_.front());
         items_.pop_front();
         const auto& d = item.delivery;
-        if (d.plain() && !item.release) {
+        if (d.plain()) {
             batch.insert(batch.end(), item.bytes.begin(), item.bytes.end());
             continue;
         }
         co_await write(batch, ec);
         batch.clear();
-        if (item.release) co_await clock_->until(*item.release);
         co_await wait(d.delay);
         if (d.pieces.empty()) {
             batch = std::move(item.bytes);

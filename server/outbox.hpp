@@ -8,9 +8,8 @@
 //    the client stops sending (it waits for an answer), the hold ends after
 //    hold_ms. The session arms watch_hold() before each read so an expiring
 //    hold interrupts the read.
-// The "model" timing mode (docs/timing.md) adds a release time on the
-// virtual clock: the response waits for it like a delay (and so does every
-// later one). A coalescing group ignores it.
+// The timing modes (docs/timing.md) do not come here: the session waits on
+// the virtual clock before a request is served.
 #pragma once
 
 #include <chrono>
@@ -22,17 +21,14 @@
 #include "station/asio.hpp"
 
 #include "scenarios/faults.hpp"
-#include "station/scan_loop.hpp"
 
 namespace slmp::server {
 
 class Outbox {
 public:
-    // `clock`: the station's scan loop, for release times (null: none are given).
-    Outbox(boost::asio::ip::tcp::socket& socket, station::ScanLoop* clock);
+    explicit Outbox(boost::asio::ip::tcp::socket& socket);
 
-    void add(std::vector<std::uint8_t> response, const scenarios::Delivery& delivery,
-             std::optional<std::chrono::steady_clock::time_point> release = {});
+    void add(std::vector<std::uint8_t> response, const scenarios::Delivery& delivery);
     // Writes everything that is not held, in order. Sets `ec` on a failed write.
     boost::asio::awaitable<void> send(boost::system::error_code& ec);
 
@@ -46,13 +42,11 @@ private:
     struct Item {
         std::vector<std::uint8_t> bytes;
         scenarios::Delivery delivery;
-        std::optional<std::chrono::steady_clock::time_point> release;   // CPU time
     };
     boost::asio::awaitable<void> write(const std::vector<std::uint8_t>& bytes, boost::system::error_code& ec);
     boost::asio::awaitable<void> wait(std::chrono::microseconds duration);
 
     boost::asio::ip::tcp::socket& socket_;
-    station::ScanLoop* clock_;
     boost::asio::steady_timer timer_;        // delays and pauses
     boost::asio::steady_timer hold_timer_;   // the coalescing hold's end
     std::deque<Item> items_;

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "server/outbox.hpp"
+#include "server/timed_input.hpp"
 #include "station/log_exception.hpp"
 #include "station/scan_loop.hpp"
 
@@ -98,26 +99,57 @@ void TcpSession::finish(const std::string& why) {
 
 awaitable<void> TcpSession::serve() {
     auto self = shared_from_this();   // keeps the session alive while it serves
-    std::vector<std::uint8_t> pending;   // bytes received but not yet a whole frame
-    Outbox outbox(socket_, station_.scan_loop());   // responses on their way out, as scenarios ask (server/outbox.hpp)
+    auto* scan = station_.scan_loop();
+    const auto mode = scan ? station_.timing_mode() : config::TimingMode::Instant;
+    // Bytes received but not yet a whole frame or not yet served; with a
+    // timing mode, stamped with their arrival and read on while waiting.
+    std::optional<TimedInput> timed;
+    if (mode != config::TimingMode::Instant) timed.emplace(socket_, *scan);
+    std::vector<std::uint8_t> plain;
+    auto& pending = timed ? timed->bytes() : plain;
+    Outbox outbox(socket_);   // responses on their way out, as scenarios ask (server/outbox.hpp)
     outbox_ = &outbox;
     std::array<std::uint8_t, 8192> chunk;
+    bool waiting_frames = false;   // end_of_scan: whole requests still wait for their END
     for (;;) {
         boost::system::error_code ec;
-        outbox.watch_hold();
-        auto n = co_await socket_.async_read_some(asio::buffer(chunk), asio::redirect_error(use_awaitable, ec));
-        if (outbox.hold_expired() && ec == asio::error::operation_aborted) ec = {};   // send what a coalescing hold kept
-        if (push_pending_ && ec == asio::error::operation_aborted && socket_.is_open()) ec = {};   // an Ondemand push woke the read
-        if (ec) {
-            if (ec != asio::error::eof && ec != asio::error::operation_aborted) close_reason_ = ec.message();
-            break;
+        if (!waiting_frames) {
+            outbox.watch_hold();
+            auto n = co_await socket_.async_read_some(asio::buffer(chunk), asio::redirect_error(use_awaitable, ec));
+            if (outbox.hold_expired() && ec == asio::error::operation_aborted) ec = {};   // send what a coalescing hold kept
+            if (push_pending_ && ec == asio::error::operation_aborted && socket_.is_open()) ec = {};   // an Ondemand push woke the read
+            if (ec) {
+                if (ec != asio::error::eof && ec != asio::error::operation_aborted) close_reason_ = ec.message();
+                break;
+            }
+            if (n > 0) last_activity_ = std::chrono::steady_clock::now();
+            pending.insert(pending.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
+            if (timed) timed->received(n);
         }
-        if (n > 0) last_activity_ = std::chrono::steady_clock::now();
-        pending.insert(pending.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
-        // end_of_scan (docs/timing.md): what arrived during this scan is
-        // executed at its END, in order, and answered then.
-        if (n > 0 && station_.timing_mode() == config::TimingMode::EndOfScan && station_.scan_loop())
-            co_await station_.scan_loop()->until_scan_after(station_.scan_loop()->scans());
+        waiting_frames = false;
+
+        // end_of_scan (docs/timing.md): the first whole request waits for the
+        // END after its arrival, or until its monitoring timer runs out;
+        // what arrives meanwhile is read and served at the same END.
+        bool at_end = false;
+        auto served_at = scan ? scan->clock().now() : std::chrono::steady_clock::time_point{};
+        if (mode == config::TimingMode::EndOfScan) {
+            const auto seen = scan->scans();
+            for (;;) {
+                const auto first = station_.next_request(pending, policy_, session_);
+                if (!first || scan->stopped() || !socket_.is_open()) break;
+                if (scan->scans() > seen) {
+                    at_end = true;
+                    break;
+                }
+                std::optional<std::chrono::steady_clock::time_point> deadline;
+                if (first->timer.count() > 0) deadline = timed->arrival(first->end) + first->timer;
+                if (deadline && scan->clock().now() >= *deadline) break;
+                co_await timed->wait(seen, deadline);
+            }
+            served_at = at_end ? scan->end_time(seen + 1) : scan->clock().now();
+        }
+        if (!socket_.is_open()) break;
 
         // Answer every whole frame now in the buffer, in order, in one write.
         // They all arrived before any was answered, so they stood in the
@@ -131,14 +163,40 @@ awaitable<void> TcpSession::serve() {
         bool reset_after = false;
         while (offset < pending.size()) {
             auto input = std::span<const std::uint8_t>(pending).subspan(offset);
-            auto handled = station_.handle(input, policy_, session_, peer_);
+            std::optional<station::Service> service;
+            if (timed) {
+                const auto queued = station_.next_request(input, policy_, session_);
+                if (!queued && mode == config::TimingMode::EndOfScan && !at_end) break;
+                if (queued && queued->start == 0) {
+                    const auto arrival = timed->arrival(offset + queued->end);
+                    if (mode == config::TimingMode::EndOfScan) {
+                        service = station::Station::end_of_scan_service(arrival, queued->timer, served_at, at_end);
+                        if (!service) {
+                            waiting_frames = true;   // this one and those behind it wait for END
+                            break;
+                        }
+                    } else if ((service = station_.model_service(input, policy_, session_, arrival))) {
+                        // model: executed and answered at the modelled time; the
+                        // answers before it leave first, and reading goes on.
+                        if (service->at > scan->clock().now()) {
+                            sending_ = true;
+                            co_await outbox.send(ec);
+                            sending_ = false;
+                        }
+                        while (!ec && service->at > scan->clock().now() && socket_.is_open() && !scan->stopped())
+                            co_await timed->wait(std::nullopt, service->at);
+                        if (ec || !socket_.is_open()) break;
+                        input = std::span<const std::uint8_t>(pending).subspan(offset);   // it may have grown
+                    }
+                }
+            }
+            auto handled = station_.handle(input, policy_, session_, peer_, service ? &*service : nullptr);
             auto& outcome = handled.outcome;
             if (outcome.action == Outcome::Action::NeedMore) break;
             if (outcome.command != 0) std::tie(last_kind_, last_codec_) = request_shape(input);
             offset += outcome.consumed;
             if (outcome.action == Outcome::Action::Respond || outcome.command != 0) ++session_.queued_ahead;   // not skipped garbage
-            if (outcome.action == Outcome::Action::Respond)
-                outbox.add(std::move(outcome.response), handled.delivery, handled.release);
+            if (outcome.action == Outcome::Action::Respond) outbox.add(std::move(outcome.response), handled.delivery);
             if (outcome.action == Outcome::Action::Close) {
                 close_after = true;
                 reset_after = handled.reset;
@@ -151,8 +209,14 @@ awaitable<void> TcpSession::serve() {
                 break;
             }
         }
-        pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(offset));
+        if (timed) timed->consumed(offset);
+        else pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(offset));
         note_pending(pending.size(), offset > 0);
+        if (ec) {
+            close_reason_ = "write failed: " + ec.message();
+            break;
+        }
+        if (!socket_.is_open()) break;
         sending_ = true;
         push_pending_ = false;
         co_await outbox.send(ec);

@@ -29,6 +29,8 @@ UdpListener::UdpListener(asio::io_context& io, station::Station& station, const 
 asio::awaitable<void> UdpListener::serve() {
     std::array<std::uint8_t, 65536> datagram;
     udp::endpoint sender;
+    auto* scan = station_.scan_loop();
+    const auto mode = scan ? station_.timing_mode() : config::TimingMode::Instant;
     while (socket_.is_open()) {
         boost::system::error_code ec;
         auto n = co_await socket_.async_receive_from(asio::buffer(datagram), sender,
@@ -38,31 +40,69 @@ asio::awaitable<void> UdpListener::serve() {
             spdlog::debug("UDP port {}: receive failed: {}", port_, ec.message());
             continue;
         }
-        if (station_.timing_mode() == config::TimingMode::EndOfScan && station_.scan_loop())   // docs/timing.md
-            co_await station_.scan_loop()->until_scan_after(station_.scan_loop()->scans());
-        const protocol::Peer peer{protocol::Transport::Udp, sender.address().to_string(), sender.port(), port_};
         auto input = std::span<const std::uint8_t>(datagram.data(), n);
-        auto handled = station_.handle(input, policy_, session_, peer);
-        auto& outcome = handled.outcome;
-        if (outcome.action == Outcome::Action::NeedMore) {
-            spdlog::debug("{} datagram of {} byte(s) holds no whole request frame (check the request data length); "
-                          "not answered", peer.text(), n);
+        if (mode == config::TimingMode::Instant) {
+            co_await answer(input, sender, nullptr);
             continue;
         }
-        if (outcome.consumed < n)
-            spdlog::debug("{} {} byte(s) after the request frame ignored", peer.text(), n - outcome.consumed);
-        // Remember who spoke, for Ondemand pushes; bounded, so a flood of
-        // source ports cannot grow it without end (later peers are not pushed to).
-        if (outcome.command != 0 && (peers_.size() < kMaxPushPeers || peers_.count(sender))) {
-            auto [kind, codec] = request_shape(input);
-            peers_[sender] = {kind, codec};
-        }
-        if (outcome.action == Outcome::Action::Restart) station_.restart();
-        if (outcome.action != Outcome::Action::Respond) continue;
-        if (handled.release && station_.scan_loop()) co_await station_.scan_loop()->until(*handled.release);
-        co_await send_datagrams(socket_, sender, outcome.response, handled.delivery, ec);
-        if (ec) spdlog::debug("{} send failed: {}", peer.text(), ec.message());
+        // Each datagram waits on the clock by itself, from its arrival
+        // (the jitter is drawn in arrival order).
+        const auto arrival = scan->clock().now();
+        std::optional<station::Service> model;
+        if (mode == config::TimingMode::Model) model = station_.model_service(input, policy_, session_, arrival);
+        asio::co_spawn(socket_.get_executor(),
+                       serve_later(std::vector<std::uint8_t>(input.begin(), input.end()), sender, arrival, model),
+                       station::log_exception("UDP port " + std::to_string(port_) + ": a held datagram failed"));
     }
+}
+
+asio::awaitable<void> UdpListener::serve_later(std::vector<std::uint8_t> datagram, udp::endpoint sender,
+                                               std::chrono::steady_clock::time_point arrival,
+                                               std::optional<station::Service> model) {
+    auto& scan = *station_.scan_loop();
+    std::optional<station::Service> service = model;
+    if (model) {
+        while (scan.clock().now() < model->at && !scan.stopped()) co_await scan.until_end_or(std::nullopt, model->at);
+    } else if (const auto queued = station_.next_request(datagram, policy_, session_);
+               station_.timing_mode() == config::TimingMode::EndOfScan && queued && queued->start == 0) {
+        // end_of_scan: the END after the arrival, or the monitoring timer first.
+        const auto seen = scan.scans();
+        std::optional<std::chrono::steady_clock::time_point> deadline;
+        if (queued->timer.count() > 0) deadline = arrival + queued->timer;
+        while (scan.scans() <= seen && !scan.stopped() && !(deadline && scan.clock().now() >= *deadline))
+            co_await scan.until_end_or(seen, deadline);
+        const bool at_end = scan.scans() > seen;
+        service = station::Station::end_of_scan_service(arrival, queued->timer,
+                                                        at_end ? scan.end_time(seen + 1) : scan.clock().now(), at_end);
+    }
+    if (scan.stopped() || !socket_.is_open()) co_return;
+    co_await answer(datagram, sender, service ? &*service : nullptr);
+}
+
+asio::awaitable<void> UdpListener::answer(std::span<const std::uint8_t> input, udp::endpoint sender,
+                                          const station::Service* service) {
+    const protocol::Peer peer{protocol::Transport::Udp, sender.address().to_string(), sender.port(), port_};
+    const auto n = input.size();
+    auto handled = station_.handle(input, policy_, session_, peer, service);
+    auto& outcome = handled.outcome;
+    if (outcome.action == Outcome::Action::NeedMore) {
+        spdlog::debug("{} datagram of {} byte(s) holds no whole request frame (check the request data length); "
+                      "not answered", peer.text(), n);
+        co_return;
+    }
+    if (outcome.consumed < n)
+        spdlog::debug("{} {} byte(s) after the request frame ignored", peer.text(), n - outcome.consumed);
+    // Remember who spoke, for Ondemand pushes; bounded, so a flood of
+    // source ports cannot grow it without end (later peers are not pushed to).
+    if (outcome.command != 0 && (peers_.size() < kMaxPushPeers || peers_.count(sender))) {
+        auto [kind, codec] = request_shape(input);
+        peers_[sender] = {kind, codec};
+    }
+    if (outcome.action == Outcome::Action::Restart) station_.restart();
+    if (outcome.action != Outcome::Action::Respond) co_return;
+    boost::system::error_code ec;
+    co_await send_datagrams(socket_, sender, outcome.response, handled.delivery, ec);
+    if (ec) spdlog::debug("{} send failed: {}", peer.text(), ec.message());
 }
 
 void UdpListener::restart_session() {

@@ -28,6 +28,13 @@ public:
 
 private:
     boost::asio::awaitable<void> serve();
+    // end_of_scan and model (docs/timing.md): one datagram, held on the
+    // virtual clock until it is served, while the port receives the next.
+    boost::asio::awaitable<void> serve_later(std::vector<std::uint8_t> datagram, boost::asio::ip::udp::endpoint sender,
+                                             std::chrono::steady_clock::time_point arrival,
+                                             std::optional<station::Service> model);
+    boost::asio::awaitable<void> answer(std::span<const std::uint8_t> datagram, boost::asio::ip::udp::endpoint sender,
+                                        const station::Service* service);
 
     station::Station& station_;
     protocol::DataCodePolicy policy_;

@@ -45,10 +45,13 @@ std::chrono::microseconds ResponseTiming::modelled(const protocol::Request& requ
 
 std::chrono::milliseconds ResponseTiming::monitoring_timer(const protocol::Request& request, std::span<const std::uint8_t> input) {
     const auto& h = request.header;
+    if (input.size() < h.header_size) return std::chrono::milliseconds{0};
     // 3E/4E/station-extended: the timer is the first field the length counts
-    // (decode.cpp reads it the same way). 1E frames' timer is not modelled.
-    if (h.kind == protocol::FrameKind::E1 || input.size() < h.header_size) return std::chrono::milliseconds{0};
-    protocol::FieldReader in(h.codec, input.subspan(h.header_size));
+    // (decode.cpp reads it the same way); 1E: the header's last field, after
+    // the subheader and the PC No. (docs/frames.md), in the same 250 ms units.
+    const std::size_t unit = h.codec == protocol::Codec::Binary ? 1 : 2;
+    const auto at = h.kind == protocol::FrameKind::E1 ? 2 * unit : h.header_size;
+    protocol::FieldReader in(h.codec, input.subspan(at));
     const auto units = in.u16("monitoring timer");
     if (!in.ok()) return std::chrono::milliseconds{0};
     return std::chrono::milliseconds{250} * units;

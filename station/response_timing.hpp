@@ -26,8 +26,8 @@ public:
     // Words of device data a request moves (a bit-unit point counts as 1/16
     // word, a double word as 2; commands that name no devices move none).
     static std::uint64_t words(const protocol::Request& request);
-    // The request's monitoring timer in time (units of 250 ms, §3.1.8); zero
-    // for 0 ("wait forever") and for frames without one that decodes.
+    // The request's monitoring timer in time (units of 250 ms, §3.1.8; 1E
+    // too); zero for 0 ("wait forever") and for a timer that does not decode.
     static std::chrono::milliseconds monitoring_timer(const protocol::Request& request, std::span<const std::uint8_t> input);
 
 private:

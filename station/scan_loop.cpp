@@ -99,12 +99,31 @@ asio::awaitable<void> ScanLoop::until(VirtualClock::TimePoint at) {
     }
 }
 
+asio::awaitable<void> ScanLoop::until_end_or(std::optional<std::uint64_t> seen, std::optional<VirtualClock::TimePoint> at) {
+    asio::steady_timer timer(timer_.get_executor());
+    WaiterGuard guard(waiters_, timer);
+    const auto now = clock_.now();
+    if (stopped_ || (seen && scans_ > *seen) || (at && now >= *at)) co_return;
+    if (clock_.frozen() || !at)
+        timer.expires_at(std::chrono::steady_clock::time_point::max());   // an END, a step, a nudge cancels it
+    else
+        timer.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>((*at - now) / clock_.speed()));
+    boost::system::error_code ec;
+    co_await timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+}
+
+VirtualClock::TimePoint ScanLoop::end_time(std::uint64_t number) const {
+    if (number == 0 || number > scans_ || scans_ - number >= kEndsKept) return last_end_;
+    return ends_[number % kEndsKept];
+}
+
 void ScanLoop::scan_once() {
     const auto now = clock_.now();
     auto calendar = local_calendar(clock_.calendar());
     for (auto* cpu : cpus_) cpu->runtime().scan(cpu->memory(), now, calendar);
     ++scans_;
     last_end_ = now;
+    ends_[scans_ % kEndsKept] = now;
     if (after_scan_) after_scan_(now);
     if (!waiters_->empty()) wake_waiters();
 }

@@ -5,8 +5,10 @@
 // own; step() runs scans at once, each moving the clock by one scan time.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <functional>
+#include <optional>
 #include <memory>
 #include <vector>
 
@@ -52,7 +54,18 @@ public:
     VirtualClock::TimePoint last_end() const { return last_end_; }   // CPU time of the last END (start: the clock's origin)
     boost::asio::awaitable<void> until_scan_after(std::uint64_t seen);
     boost::asio::awaitable<void> until(VirtualClock::TimePoint at);
+    // Returns at whichever comes first: the END of the scan after the
+    // `seen`-th (none: no END ends the wait), CPU time `at` (none: no time
+    // limit), or a nudge().
+    boost::asio::awaitable<void> until_end_or(std::optional<std::uint64_t> seen, std::optional<VirtualClock::TimePoint> at);
+    // Wakes every waiter to re-check its condition (a transport read more
+    // while it waited: its earliest deadline may have changed).
+    void nudge() { wake_waiters(); }
+    // The CPU time of the `number`-th END (the first is 1) when it is one of
+    // the last kEndsKept; otherwise last_end().
+    VirtualClock::TimePoint end_time(std::uint64_t number) const;
     std::size_t waiting() const { return waiters_->size(); }   // answers held now (GET /api/info)
+    bool stopped() const { return stopped_; }   // at shutdown: waits return at once
 
 private:
     boost::asio::awaitable<void> run();
@@ -68,6 +81,8 @@ private:
     bool stopped_ = false;
     std::uint64_t scans_ = 0;
     VirtualClock::TimePoint last_end_;
+    static constexpr std::size_t kEndsKept = 16;
+    std::array<VirtualClock::TimePoint, kEndsKept> ends_{};   // END n at ends_[n % kEndsKept]
     // Shared with each waiting coroutine, which removes itself also when it is
     // destroyed after the loop (at shutdown).
     std::shared_ptr<Waiters> waiters_ = std::make_shared<Waiters>();

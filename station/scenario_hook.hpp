@@ -32,9 +32,6 @@ struct Handled {
     protocol::Outcome outcome;
     scenarios::Delivery delivery;   // how to send outcome.response
     bool reset = false;             // close with RST (SO_LINGER 0) instead of FIN
-    // The "model" timing mode: the CPU time (ScanLoop::clock()) before which
-    // the response may not leave (docs/timing.md); unset: at once.
-    std::optional<std::chrono::steady_clock::time_point> release;
 };
 
 class ScenarioHook : public ActivityObserver {

@@ -89,7 +89,7 @@ protocol::Session Station::new_session(const config::PortConfig& port) {
 }
 
 Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
-                        const protocol::Peer& peer) {
+                        const protocol::Peer& peer, const Service* service) {
     activity_.request_starting();
     auto started = std::chrono::steady_clock::now();
     // Decode once; the scenario hook sits between decode and execute.
@@ -97,8 +97,11 @@ Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodeP
     auto plan = scenario_.before(incoming, input, session, peer);
     Handled handled;
     std::optional<std::chrono::microseconds> modelled;
-    if (timing_ && plan.pass() && incoming.request.complete() && incoming.request.has_command)
-        modelled = model_response(incoming.request, input, handled);   // may answer the monitoring timer's CF71
+    if (service && plan.pass() && incoming.request.complete() && incoming.request.has_command) {
+        modelled = service->modelled;
+        if (service->timed_out)   // the port gave up waiting for the CPU (docs/timing.md)
+            handled.outcome = timed_out(incoming.request, ResponseTiming::monitoring_timer(incoming.request, input));
+    }
     if (handled.outcome.action == Outcome::Action::NeedMore)
         handled.outcome = plan.pass() ? engine_.execute(incoming.request, session) : scenario_.answer(plan, incoming.request);
     scenario_.after(plan, handled, input, session, peer);
@@ -108,38 +111,6 @@ Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodeP
     activity_.request({session.id, peer, input.first(outcome.consumed), incoming.request, outcome,
                        std::chrono::steady_clock::now() - started, modelled});
     return handled;
-}
-
-std::optional<std::chrono::microseconds> Station::model_response(const protocol::Request& request,
-                                                                 std::span<const std::uint8_t> input, Handled& handled) {
-    using std::chrono::microseconds;
-    const auto& clock = scan_->clock();
-    const auto now = clock.now();
-    // The next END in CPU time: a running clock's scan covers period × speed of it.
-    const auto cpu_period = clock.frozen() ? std::chrono::duration_cast<microseconds>(scan_->period())
-                                           : std::chrono::duration_cast<microseconds>(scan_->period() * clock.speed());
-    const auto next_end = scan_->last_end() + cpu_period;
-    const auto scan_wait = next_end > now ? std::chrono::duration_cast<microseconds>(next_end - now) : microseconds{0};
-    const auto modelled = timing_->modelled(request, scan_wait);
-    const auto timer = ResponseTiming::monitoring_timer(request, input);
-    if (timer.count() > 0 && modelled > timer) {
-        // The port gives up when the timer runs out (docs/timing.md: CF71,
-        // "processing aborted because of a timeout"); the CPU never ran the
-        // request, so nothing is read or written.
-        auto& o = handled.outcome;
-        o.action = Outcome::Action::Respond;
-        o.consumed = request.size;
-        o.command = request.command;
-        o.subcommand = request.subcommand;
-        o.end_code = protocol::EndCode::RelayTimeout;
-        o.response = protocol::encode_error_response(request.header, request.command, request.subcommand, o.end_code);
-        o.note = "the modelled response time exceeds the monitoring timer (" + std::to_string(timer.count()) +
-                 " ms); answered CF71 when it ran out";
-        handled.release = now + timer;
-        return timer;
-    }
-    handled.release = now + modelled;
-    return modelled;
 }
 
 // Remote RESET (slmp-labels-remote-misc.md §5.6): the CPU has restarted; as on

@@ -31,6 +31,22 @@ class ScanLoop;
 class ScenarioStation;
 struct StationSnapshot;
 
+// When and how a transport has a request served in the end_of_scan and
+// model timing modes (docs/timing.md): it waits until `at` (CPU time), then
+// hands the request to Station::handle() with this.
+struct Service {
+    std::chrono::steady_clock::time_point at;            // CPU time
+    bool timed_out = false;                              // the monitoring timer ran out first: CF71, not executed
+    std::optional<std::chrono::microseconds> modelled;   // model mode: the modelled time (metrics)
+};
+
+// The first whole request a transport holds (Station::next_request).
+struct Queued {
+    std::size_t start = 0;                // bytes the port skips before it (0: it starts the input)
+    std::size_t end = 0;                  // bytes from the start of the input to its end
+    std::chrono::milliseconds timer{0};   // its monitoring timer (0: none or waits forever)
+};
+
 class Station {
 public:
     // A bare station: CPU No.1 and its engine, no scan cycle, no state
@@ -54,8 +70,28 @@ public:
     // One request frame from any transport: the scenario hook and the engine
     // handle it, it is logged and reported to the activity observers (not when
     // the input holds no whole frame yet: NeedMore).
+    // `service`: end_of_scan and model, when the transport waited for it
+    // (model_service(), end_of_scan_service()); a timed-out request is
+    // answered CF71 (1E: 60) and not executed.
     Handled handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
-                   const protocol::Peer& peer);
+                   const protocol::Peer& peer, const Service* service = nullptr);
+    // end_of_scan and model (station_timing.cpp): the first whole request in
+    // `input`, after bytes the port would skip; nullopt while none is whole.
+    std::optional<Queued> next_request(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy,
+                                       const protocol::Session& session) const;
+    // model: when the request at the start of `input`, which arrived at
+    // `arrival` (CPU time), is executed and answered — arrival + the modelled
+    // time, or + its monitoring timer when that runs out first. Draws the
+    // next jitter value. nullopt: not model mode, or no whole request.
+    std::optional<Service> model_service(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy,
+                                         const protocol::Session& session,
+                                         std::chrono::steady_clock::time_point arrival);
+    // end_of_scan: how a request that arrived at `arrival` with `timer` is
+    // served at CPU time `now`, `at_end` telling whether `now` is the END that
+    // serves it; nullopt: not yet (it waits for that END).
+    static std::optional<Service> end_of_scan_service(std::chrono::steady_clock::time_point arrival,
+                                                      std::chrono::milliseconds timer,
+                                                      std::chrono::steady_clock::time_point now, bool at_end);
     // Ondemand 2101 (docs/timing.md): the words of `action`'s devices, now,
     // framed in each client's shape, to the clients its `to` names; recorded
     // and reported to the activity observers. Returns what was sent to whom
@@ -92,10 +128,10 @@ public:
 
     // The scan cycle and its virtual clock (station/scan_loop.hpp); null in a bare station.
     ScanLoop* scan_loop() { return scan_.get(); }
-    // When answers leave (docs/timing.md). Instant in a bare station. With
-    // end_of_scan the transports wait for scan_loop()->until_scan_after()
-    // before they hand over what they read, so requests execute at END; with
-    // model, handle() sets Handled::release.
+    // When requests are served (docs/timing.md). Instant in a bare station.
+    // With end_of_scan the transports wait for the END after a request's
+    // arrival (or its monitoring timer) before they hand it over, so it
+    // executes at END; with model, they wait for model_service().
     config::TimingMode timing_mode() const { return timing_mode_; }
     const config::TimingModel& timing_model() const { return timing_model_; }
 
@@ -113,10 +149,8 @@ private:
     void start_scenarios(std::vector<scenarios::Scenario> list);
     void take_initial_snapshot();                                 // station_snapshot.cpp; applies --snapshot
     std::vector<devicemodel::Cpu*> all_cpus();
-    // The model mode between decode and execute: the modelled time, or the
-    // monitoring timer's CF71 when the model exceeds it (response_timing.hpp).
-    std::optional<std::chrono::microseconds> model_response(const protocol::Request& request,
-                                                            std::span<const std::uint8_t> input, Handled& handled);
+    // The monitoring timer's answer: CF71 (1E: 60), nothing executed.
+    static protocol::Outcome timed_out(const protocol::Request& request, std::chrono::milliseconds timer);
 
     config::ServerConfig config_;   // with the scenarios' initial state joined
     devicemodel::Cpu cpu_;

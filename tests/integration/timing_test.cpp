@@ -176,3 +176,121 @@ TEST_CASE("model, running clock: never answered before the modelled time", "[tim
         CHECK(took < std::chrono::seconds(3));
     }
 }
+
+TEST_CASE("end_of_scan: a request that arrives while the connection waits for END is served at that END", "[timing]") {
+    auto sim = frozen_sim(R"({"mode": "end_of_scan"})");
+    const auto port = sim.http_port();
+    auto c = TcpClient::open(sim.tcp_port());
+    REQUIRE(c.send(client::read_words(kBin.options(), addr("D0"), 1)));
+    await_waiting(port, 1);
+    // The second request arrives during the wait (it is in the port's receive
+    // buffer before the step): the next END serves both, in order. Served a
+    // scan late, its answer would never come (nothing steps the clock again).
+    REQUIRE(c.send(client::read_words(kBin.options(), addr("D1"), 1)));
+    REQUIRE(http_put(port, "/api/devices/D0", R"({"values": [7, 8]})").status == 200);
+    CHECK(nothing_received(c));
+    step(port, R"({"scans": 1})");
+    CHECK(show(response_of(c)) == show(expected_response(kBin, word_data(kBin, {7}))));
+    CHECK(show(response_of(c)) == show(expected_response(kBin, word_data(kBin, {8}))));
+    CHECK(http_get(port, "/api/info").json()["timing"]["waiting"] == 0);
+}
+
+TEST_CASE("end_of_scan: a monitoring timer that runs out before the END is answered CF71, not executed", "[timing]") {
+    SimOptions so;
+    so.config_json = R"({"timing": {"mode": "end_of_scan"}, "cpu": {"scan_time_ms": 1000}})";
+    so.args = {"--clock", "frozen"};
+    SimProcess sim(so);
+    const auto port = sim.http_port();
+    auto wait_forever = kBin.options();
+    wait_forever.monitoring_timer = 0;
+    auto quarter = kBin.options();
+    quarter.monitoring_timer = 1;   // 250 ms < the 1000 ms scan
+    auto second = kBin.options();
+    second.monitoring_timer = 4;    // 1000 ms: the END comes just in time
+    auto c = TcpClient::open(sim.tcp_port());
+    const std::vector<std::uint16_t> five = {5}, six = {6};
+    REQUIRE(c.send(concat({client::write_words(wait_forever, addr("D0"), five), client::write_words(quarter, addr("D1"), six),
+                           client::read_words(second, addr("D0"), 2)})));
+    await_waiting(port, 1);
+    step(port, R"({"scans": 1})");   // one END, 1000 ms after the arrival
+    CHECK(show(response_of(c)) == show(expected_response(kBin, {})));
+    CHECK(show(response_of(c)) == show(expected_response(kBin, error_info(kBin, 0x1401, 0x0000), 0xCF71)));
+    CHECK(show(response_of(c)) == show(expected_response(kBin, word_data(kBin, {5, 0}))));
+    CHECK(http_get(port, "/api/devices/D0?count=2").json()["values"] == json{5, 0});
+}
+
+TEST_CASE("end_of_scan over UDP: a datagram whose timer runs out first is answered CF71", "[timing]") {
+    SimOptions so;
+    so.config_json = R"({"timing": {"mode": "end_of_scan"}, "cpu": {"scan_time_ms": 1000}})";
+    so.args = {"--clock", "frozen"};
+    SimProcess sim(so);
+    const auto port = sim.http_port();
+    auto quarter = kBin.options();
+    quarter.monitoring_timer = 1;
+    const std::vector<std::uint16_t> six = {6};
+    UdpClient u;
+    REQUIRE(u.send_to(sim.udp_port(), client::write_words(quarter, addr("D1"), six)));
+    await_waiting(port, 1);
+    step(port, R"({"scans": 1})");
+    auto reply = u.receive();
+    REQUIRE(reply);
+    CHECK(show(*reply) == show(expected_response(kBin, error_info(kBin, 0x1401, 0x0000), 0xCF71)));
+    CHECK(http_get(port, "/api/devices/D1").json()["values"] == json{0});
+}
+
+TEST_CASE("model: a write executes when its answer leaves, not when it arrives", "[timing]") {
+    auto sim = frozen_sim(R"({"mode": "model", "ke_ms": 10, "kdt_ms": 1, "scan_wait": false})");
+    const auto port = sim.http_port();
+    auto c = TcpClient::open(sim.tcp_port());
+    const std::vector<std::uint16_t> five = {5};
+    REQUIRE(c.send(client::write_words(kBin.options(), addr("D0"), five)));   // 10 + 1 x 1 = 11 ms
+    await_waiting(port, 1);
+    CHECK(http_get(port, "/api/devices/D0").json()["values"] == json{0});
+    step(port, R"({"ms": 10})");
+    CHECK(nothing_received(c));
+    CHECK(http_get(port, "/api/devices/D0").json()["values"] == json{0});   // not yet on the CPU
+    step(port, R"({"ms": 1})");
+    CHECK(show(response_of(c)) == show(expected_response(kBin, {})));
+    CHECK(http_get(port, "/api/devices/D0").json()["values"] == json{5});
+    // Another client sees it too (its read is modelled as well: 10 + 1 x 1 ms).
+    auto other = TcpClient::open(sim.tcp_port());
+    REQUIRE(other.send(client::read_words(kBin.options(), addr("D0"), 1)));
+    await_waiting(port, 1);
+    step(port, R"({"ms": 11})");
+    CHECK(show(response_of(other)) == show(expected_response(kBin, word_data(kBin, {5}))));
+}
+
+TEST_CASE("1E frames: end_of_scan answers at END, and the model monitoring timer answers 60", "[timing][1E]") {
+    // Batch read (01) / write (03) of D0, PC No. FF (docs/frames.md).
+    const Bytes read_d0 = hex("01 FF 0A 00 00 00 00 00 20 44 01 00");
+    const Bytes write_d0 = hex("03 FF 01 00 00 00 00 00 20 44 01 00 05 00");   // timer 1 = 250 ms
+    SECTION("end_of_scan") {
+        SimOptions so;
+        so.config_json = R"({"timing": {"mode": "end_of_scan"}})";
+        so.args = {"--clock", "frozen", "--profile", "Q06UDVCPU-QJ71E71"};
+        SimProcess sim(so);
+        const auto port = sim.http_port();
+        auto c = TcpClient::open(sim.tcp_port());
+        REQUIRE(c.send(read_d0));
+        await_waiting(port, 1);
+        REQUIRE(http_put(port, "/api/devices/D0", R"({"values": [9]})").status == 200);
+        CHECK(nothing_received(c));
+        step(port, R"({"scans": 1})");
+        CHECK(show(c.read_exactly(4)) == show(hex("81 00 09 00")));
+    }
+    SECTION("model") {
+        SimOptions so;
+        so.config_json = R"({"timing": {"mode": "model", "ke_ms": 600, "scan_wait": false}})";
+        so.args = {"--clock", "frozen", "--profile", "Q06UDVCPU-QJ71E71"};
+        SimProcess sim(so);
+        const auto port = sim.http_port();
+        auto c = TcpClient::open(sim.tcp_port());
+        REQUIRE(c.send(write_d0));
+        await_waiting(port, 1);
+        step(port, R"({"ms": 249})");
+        CHECK(nothing_received(c));
+        step(port, R"({"ms": 1})");
+        CHECK(show(c.read_exactly(2)) == show(hex("83 60")));
+        CHECK(http_get(port, "/api/devices/D0").json()["values"] == json{0});
+    }
+}

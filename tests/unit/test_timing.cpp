@@ -124,3 +124,38 @@ TEST_CASE("timing configuration: mode, constants over the profile's, errors name
     CHECK_FALSE(p.timing.scan_wait);
     CHECK(config::load_profile("R08CPU").timing.ke_binary_ms == 3.9);
 }
+
+TEST_CASE("monitoring timer of a 1E frame: the header's field after the PC No., binary and ASCII", "[timing][1E]") {
+    slmp::station::Station station(config::load_profile("Q06UDVCPU-QJ71E71"), {});
+    const Bytes binary = {0x01, 0xFF, 0x04, 0x00, 0x00, 0x00, 0x00, 0x00, 0x20, 0x44, 0x01, 0x00};   // D0 x1, timer 4
+    CHECK(ResponseTiming::monitoring_timer(decoded(station, binary), binary) == milliseconds{1000});
+    const auto ascii = text("01FF0010" "4420" "00000000" "0100");   // timer 0010 = 16
+    CHECK(ResponseTiming::monitoring_timer(decoded(station, ascii), ascii) == milliseconds{4000});
+}
+
+TEST_CASE("end_of_scan: served at the END unless the monitoring timer ran out first", "[timing]") {
+    using slmp::station::Station;
+    using namespace std::chrono_literals;
+    const auto t0 = std::chrono::steady_clock::time_point{} + 1s;
+    // Before the END it waits, until its timer has run out: then CF71 at the timer's time.
+    CHECK_FALSE(Station::end_of_scan_service(t0, 250ms, t0 + 249ms, false));
+    auto s = Station::end_of_scan_service(t0, 250ms, t0 + 250ms, false);
+    REQUIRE(s);
+    CHECK(s->timed_out);
+    CHECK(s->at == t0 + 250ms);
+    // At the END: in time (also exactly at the timer), or too late.
+    s = Station::end_of_scan_service(t0, 250ms, t0 + 250ms, true);
+    REQUIRE(s);
+    CHECK_FALSE(s->timed_out);
+    s = Station::end_of_scan_service(t0, 250ms, t0 + 251ms, true);
+    REQUIRE(s);
+    CHECK(s->timed_out);
+    // Timer 0 waits for ever; a request that arrived after the END it is served at is in time.
+    CHECK_FALSE(Station::end_of_scan_service(t0, 0ms, t0 + 10s, false));
+    s = Station::end_of_scan_service(t0, 0ms, t0 + 10s, true);
+    REQUIRE(s);
+    CHECK_FALSE(s->timed_out);
+    s = Station::end_of_scan_service(t0, 250ms, t0 - 1ms, true);
+    REQUIRE(s);
+    CHECK_FALSE(s->timed_out);
+}

@@ -7,11 +7,13 @@
 // to rewrite it after a deliberate change.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <sstream>
 
 #include "devicemodel/device_table.hpp"
 #include "protocol/command_table.hpp"
 #include "protocol/end_code.hpp"
+#include "protocol/frame_1e.hpp"
 #include "support/generated_section.hpp"
 
 using namespace slmp;
@@ -39,6 +41,21 @@ std::string hex(unsigned value, int digits) {
     out.fill('0');
     out << value;
     return out.str();
+}
+
+const char* layout_name(protocol::Layout1E layout) {
+    using enum protocol::Layout1E;
+    switch (layout) {
+        case Header: return "header";
+        case Read: return "read";
+        case WriteBits: return "write_bits";
+        case WriteWords: return "write_words";
+        case TestBits: return "test_bits";
+        case TestWords: return "test_words";
+        case DeviceList: return "device_list";
+        case Loopback: return "loopback";
+    }
+    return "header";
 }
 
 std::string render() {
@@ -72,6 +89,20 @@ std::string render() {
         out << "    {" << lua_string(d.symbol) << ", " << hex(d.iqr_code, 4) << ", " << d.q_code << ", "
             << lua_string(d.ascii_q) << ", " << lua_string(devicemodel::ascii_name(d, 4)) << ", "
             << static_cast<int>(d.radix) << ", " << lua_string(d.name) << "},\n";
+    out << "}\n\n";
+
+    // The 1E frame (protocol/frame_1e.cpp): each command, the 3E row that serves it, its layout.
+    out << "-- [1E command] = {name, command, subcommand, layout, response carries bit data}\n";
+    out << "local COMMANDS_1E = {\n";
+    for (const auto& c : protocol::all_commands_1e())
+        out << "    [" << hex(c.code, 2) << "] = {" << lua_string(c.name) << ", " << hex(c.command, 4) << ", "
+            << hex(c.subcommand, 4) << ", " << lua_string(layout_name(c.layout)) << ", "
+            << (c.bit_data ? "true" : "false") << "},\n";
+    out << "}\n";
+    out << "-- [1E end code * 0x100 + abnormal code (after 5B; else 0)] = meaning\n";
+    out << "local END_CODES_1E = {\n";
+    for (const auto& e : protocol::all_end_codes_1e())
+        out << "    [" << hex(e.code * 0x100u + e.abnormal.value_or(0), 4) << "] = " << lua_string(e.meaning) << ",\n";
     out << "}\n";
     return out.str();
 }
@@ -81,4 +112,16 @@ std::string render() {
 TEST_CASE("tools/wireshark/slmp.lua carries the command, end-code and device tables of the simulator",
           "[wireshark]") {
     test::check_generated_section(kDissector, kBegin, kEnd, render());
+}
+
+TEST_CASE("every 1E end code the simulator answers has a meaning in the dissector's table", "[wireshark]") {
+    const auto texts = protocol::all_end_codes_1e();
+    for (unsigned raw = 0; raw <= 0xFFFF; ++raw) {
+        const auto code = protocol::end_code_1e(protocol::end_code(static_cast<std::uint16_t>(raw)));
+        const bool found = std::any_of(texts.begin(), texts.end(), [&](const auto& t) {
+            return t.code == code.code && t.abnormal == code.abnormal;
+        });
+        INFO("SLMP end code " << raw);
+        REQUIRE(found);
+    }
 }

@@ -5,7 +5,9 @@ Starts the real binary on free ports, holds a known exchange with it over TCP
 and UDP (3E and 4E, binary and ASCII, a normal and an error response, a
 request split across two TCP segments, two requests in one segment), stops it,
 and has Debian's tshark decode the capture with the dissector: every field of
-every message must come out as sent.
+every message must come out as sent. Then the same for a 1E session (binary
+and ASCII, a profile that serves 1E) and a station-number-extended session
+(the RJ71GN11-T2 profile).
 
 Usage: check_dissector.py SLMP_SIM_BINARY DISSECTOR_LUA
 Exit 0 on success; prints every mismatch and exits 1 otherwise.
@@ -47,6 +49,14 @@ def frame_4e_binary(serial, command, subcommand, data):
 def frame_3e_ascii(text):
     """text: timer, command, subcommand and data as ASCII hex."""
     return ("500000FF03FF00" + f"{len(text):04X}" + text).encode()
+
+
+def frame_ext(serial, command, subcommand, data, station=0xFF, extended=0x0000):
+    """The station-number-extended frame (68 00; docs/frames.md)."""
+    body = (bytes([0x10, 0x00]) + command.to_bytes(2, "little") + subcommand.to_bytes(2, "little") + bytes(6)
+            + data)
+    return (bytes([0x68, 0x00]) + serial.to_bytes(2, "little") + bytes([0, 0, 0x00, station, 0xFF, 0x03, 0x00, 0x00])
+            + extended.to_bytes(2, "little") + len(body).to_bytes(2, "little") + body)
 
 
 def read_exactly(sock, n):
@@ -102,14 +112,63 @@ def converse(tcp_port, udp_port):
         u.recvfrom(4096)
 
 
+def converse_1e(tcp_port, udp_port):
+    """A 1E session (docs/frames.md): a 1E response has no length field, so
+    each answer's length is the one the exchange expects."""
+    d100 = bytes([100, 0, 0, 0, 0x20, 0x44])      # D100: number (4), code "D " (2)
+    m0 = bytes([0, 0, 0, 0, 0x20, 0x4D])          # M0
+    with socket.create_connection(("127.0.0.1", tcp_port), timeout=10) as s:
+        exchanges = [
+            (bytes([0x03, 0xFF, 0x0A, 0x00]) + d100 + bytes([3, 0, 1, 0, 2, 0, 3, 0]), 2),   # write D100-D102
+            (bytes([0x01, 0xFF, 0x0A, 0x00]) + d100 + bytes([3, 0]), 8),                    # read them
+            (bytes([0x02, 0xFF, 0x0A, 0x00]) + m0 + bytes([3, 0, 0x10, 0x10]), 2),          # M0-M2 = 1, 0, 1
+            (bytes([0x00, 0xFF, 0x0A, 0x00]) + m0 + bytes([3, 0]), 4),                      # read them
+            (bytes([0x04, 0xFF, 0x0A, 0x00, 1, 0]) + bytes([5, 0, 0, 0, 0x20, 0x4D, 1]), 2),  # test: M5 on
+            (bytes([0x07, 0xFF, 0x0A, 0x00, 2, 0]) + d100 + bytes([200, 0, 0, 0, 0x20, 0x44]), 2),  # register D100, D200
+            (bytes([0x01, 0xFF, 0x0A, 0x00]) + bytes([0xFF, 0xFF, 0, 0, 0x20, 0x44]) + bytes([2, 0]), 2),  # D65535 x2: 57
+            (bytes([0x15, 0xFF, 0x0A, 0x00]), 3),                                             # PC type
+            (bytes([0x16, 0xFF, 0x0A, 0x00, 5]) + b"ABCDE", 8),                               # loopback
+        ]
+        for request, answer in exchanges:
+            s.sendall(request)
+            read_exactly(s, answer)
+        # ASCII: test (word units) D200 = 1234H, the monitor of the registration above, a read.
+        s.sendall(b"05FF000A" b"0100" b"4420" b"000000C8" b"1234")
+        read_exactly(s, 4)
+        s.sendall(b"09FF000A")
+        read_exactly(s, 12)
+        s.sendall(b"01FF000A" b"4420" b"00000064" b"0200")
+        read_exactly(s, 12)
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as u:
+        u.settimeout(10)
+        u.sendto(bytes([0x01, 0xFF, 0x0A, 0x00]) + d100 + bytes([1, 0]), ("127.0.0.1", udp_port))
+        u.recvfrom(4096)
+
+
+def converse_ext(tcp_port):
+    """A station-number-extended session: write and read D100 (station FF,
+    extended 0000), the own station by its extended number (7C, FFFF), and
+    another station (7C, 0005) answered 4A02 with its error information."""
+    with socket.create_connection(("127.0.0.1", tcp_port), timeout=10) as s:
+        def exchange(frame):
+            s.sendall(frame)
+            head = read_exactly(s, 16)
+            read_exactly(s, int.from_bytes(head[-2:], "little"))
+        exchange(frame_ext(0x1234, 0x1401, 0x0000, bytes([100, 0, 0, 0xA8, 2, 0, 0x34, 0x12, 0x78, 0x56])))
+        exchange(frame_ext(0x1235, 0x0401, 0x0000, bytes([100, 0, 0, 0xA8, 2, 0]), station=0x7C, extended=0xFFFF))
+        exchange(frame_ext(0x1236, 0x0401, 0x0000, bytes([100, 0, 0, 0xA8, 1, 0]), station=0x7C, extended=0x0005))
+
+
 FIELDS = ["frame.number", "slmp.frame", "slmp.data_code", "slmp.serial", "slmp.command", "slmp.subcommand",
           "slmp.command_name", "slmp.device", "slmp.points", "slmp.word", "slmp.end_code",
           "slmp.end_code_meaning", "slmp.request_in", "slmp.response_in", "udp.srcport"]
 
 
-def decode(pcap):
-    """One dict of fields per SLMP message (a packet with two messages gives two)."""
-    out = subprocess.run(["tshark", "-X", f"lua_script:{LUA}", "-2", "-r", pcap, "-Y", "slmp",
+def decode(pcap, ports=None):
+    """One dict of fields per SLMP message (a packet with two messages gives two).
+    `ports`: the SLMP ports preference (a 1E frame is decoded only there)."""
+    prefs = ["-o", f"slmp.ports:{ports}"] if ports else []
+    out = subprocess.run(["tshark", "-X", f"lua_script:{LUA}", *prefs, "-2", "-r", pcap, "-Y", "slmp",
                           "-T", "json", "--no-duplicate-keys", "-J", "frame udp slmp"],
                          capture_output=True, text=True, check=False)
     if out.returncode != 0 or "rror" in out.stderr:
@@ -170,6 +229,57 @@ LIVE = [
 ]
 
 
+ONE_E = [
+    dict(frame="1E request", code="binary", cmd1e="0x03", command="0x1401", sub="0x0000",
+         name="Batch Write (word units)", device="D100", points="3", words="0x0001,0x0002,0x0003"),
+    dict(frame="1E response", code="binary", cmd1e="0x83", end1e="0x00", meaning="normal completion"),
+    dict(frame="1E request", code="binary", cmd1e="0x01", command="0x0401", name="Batch Read (word units)",
+         device="D100", points="3"),
+    dict(frame="1E response", code="binary", cmd1e="0x81", end1e="0x00", words="0x0001,0x0002,0x0003"),
+    dict(frame="1E request", code="binary", cmd1e="0x02", command="0x1401", sub="0x0001",
+         name="Batch Write (bit units)", device="M0", points="3", bits="101"),
+    dict(frame="1E response", code="binary", cmd1e="0x82", end1e="0x00"),
+    dict(frame="1E request", code="binary", cmd1e="0x00", name="Batch Read (bit units)", device="M0", points="3"),
+    dict(frame="1E response", code="binary", cmd1e="0x80", end1e="0x00", bits="101"),
+    dict(frame="1E request", code="binary", cmd1e="0x04", command="0x1402", sub="0x0001",
+         name="Test (random write, bit units)", device="M5", points="1", value="0x00000001"),
+    dict(frame="1E response", code="binary", cmd1e="0x84", end1e="0x00"),
+    dict(frame="1E request", code="binary", cmd1e="0x07", command="0x0801",
+         name="Monitor Device Registration (word units)", device="D100,D200", points="2"),
+    dict(frame="1E response", code="binary", cmd1e="0x87", end1e="0x00"),
+    dict(frame="1E request", code="binary", cmd1e="0x01", device="D65535", points="2"),
+    dict(frame="1E response", code="binary", cmd1e="0x81", end1e="0x57", meaning="points or device range exceeded"),
+    dict(frame="1E request", code="binary", cmd1e="0x15", command="0x0101", name="PC Type Read"),
+    dict(frame="1E response", code="binary", cmd1e="0x95", end1e="0x00", pc_type="0x41"),
+    dict(frame="1E request", code="binary", cmd1e="0x16", command="0x0619", name="Loopback Test", points="5",
+         loopback="ABCDE"),
+    dict(frame="1E response", code="binary", cmd1e="0x96", end1e="0x00", points="5", loopback="ABCDE"),
+    dict(frame="1E request", code="ASCII", cmd1e="0x05", command="0x1402", sub="0x0000",
+         name="Test (random write, word units)", device="D200", points="1", value="0x00001234"),
+    dict(frame="1E response", code="ASCII", cmd1e="0x85", end1e="0x00"),
+    dict(frame="1E request", code="ASCII", cmd1e="0x09", command="0x0802", name="Monitor (word units)"),
+    dict(frame="1E response", code="ASCII", cmd1e="0x89", end1e="0x00", words="0x0001,0x1234"),
+    dict(frame="1E request", code="ASCII", cmd1e="0x01", device="D100", points="2"),
+    dict(frame="1E response", code="ASCII", cmd1e="0x81", end1e="0x00", words="0x0001,0x0002"),
+    dict(frame="1E request", code="binary", cmd1e="0x01", device="D100", points="1", udp=True),
+    dict(frame="1E response", code="binary", cmd1e="0x81", end1e="0x00", words="0x0001", udp=True),
+]
+
+EXTENDED = [
+    dict(frame="station-extended request", code="binary", serial="0x1234", ext="0x0000", command="0x1401",
+         name="Device Write (word units, Q form)", device="D100", points="2"),
+    dict(frame="station-extended response", code="binary", serial="0x1234", command="0x1401", sub="0x0000",
+         end="0x0000"),
+    dict(frame="station-extended request", code="binary", serial="0x1235", station="0x7c", ext="0xffff",
+         command="0x0401", device="D100", points="2"),
+    dict(frame="station-extended response", code="binary", serial="0x1235", end="0x0000", words="0x1234,0x5678"),
+    dict(frame="station-extended request", code="binary", serial="0x1236", station="0x7c", ext="0x0005",
+         command="0x0401", device="D100", points="1"),
+    dict(frame="station-extended response", code="binary", serial="0x1236", command="0x0401", end="0x4a02",
+         station="0x7c,0x7c", ext="0x0005,0x0005"),
+]
+
+
 def compare(what, expected, messages):
     failures = []
     if len(messages) != len(expected):
@@ -177,7 +287,9 @@ def compare(what, expected, messages):
                         + "\n".join(str(m) for m in messages))
     keys = dict(frame="slmp.frame", code="slmp.data_code", serial="slmp.serial", command="slmp.command",
                 sub="slmp.subcommand", name="slmp.command_name", device="slmp.device", points="slmp.points",
-                words="slmp.word", end="slmp.end_code", meaning="slmp.end_code_meaning")
+                words="slmp.word", end="slmp.end_code", meaning="slmp.end_code_meaning", cmd1e="slmp.command_1e",
+                end1e="slmp.end_code_1e", bits="slmp.bits", value="slmp.value", pc_type="slmp.pc_type",
+                loopback="slmp.loopback", ext="slmp.extended_station", station="slmp.station")
     for i, (want, got) in enumerate(zip(expected, messages)):
         where = f"{what}, message {i + 1} (frame {got['frame.number']})"
         for key, field in keys.items():
@@ -236,20 +348,31 @@ REASSEMBLED = [
 ]
 
 
+def record(tmp, name, profile, converse_with):
+    """Runs slmp-sim with `profile`, holds `converse_with(tcp, udp)` with it;
+    returns the capture and the TCP and UDP ports."""
+    ready, pcap = os.path.join(tmp, name + ".json"), os.path.join(tmp, name + ".pcap")
+    sim = subprocess.Popen([SIM, "--profile", profile, "--tcp-port", "0", "--udp-port", "0", "--no-http",
+                            "--ready-file", ready, "--record-pcap", pcap, "--log-level", "warn"])
+    try:
+        wait_for(lambda: os.path.exists(ready) and os.path.getsize(ready) > 0, "the ready file")
+        with open(ready) as f:
+            ports = json.load(f)
+        converse_with(ports["tcp"][0], ports["udp"][0])
+    finally:
+        sim.send_signal(signal.SIGTERM)
+        sim.wait(timeout=30)
+    return pcap, ports["tcp"][0], ports["udp"][0]
+
+
 def main():
     with tempfile.TemporaryDirectory() as tmp:
-        ready, pcap = os.path.join(tmp, "ready.json"), os.path.join(tmp, "session.pcap")
-        sim = subprocess.Popen([SIM, "--tcp-port", "0", "--udp-port", "0", "--no-http", "--ready-file", ready,
-                                "--record-pcap", pcap, "--log-level", "warn"])
-        try:
-            wait_for(lambda: os.path.exists(ready) and os.path.getsize(ready) > 0, "the ready file")
-            with open(ready) as f:
-                ports = json.load(f)
-            converse(ports["tcp"][0], ports["udp"][0])
-        finally:
-            sim.send_signal(signal.SIGTERM)
-            sim.wait(timeout=30)
+        pcap, _, _ = record(tmp, "session", "R08CPU", converse)
         failures = compare("recorded session", LIVE, decode(pcap))
+        pcap, tcp, udp = record(tmp, "session-1e", "Q06UDVCPU-QJ71E71", converse_1e)
+        failures += compare("recorded 1E session", ONE_E, decode(pcap, f"{tcp},{udp}"))
+        pcap, _, _ = record(tmp, "session-ext", "RJ71GN11-T2", lambda tcp, udp: converse_ext(tcp))
+        failures += compare("recorded station-number-extended session", EXTENDED, decode(pcap))
         synthetic = os.path.join(tmp, "segments.pcap")
         synthetic_capture(synthetic)
         reassembled = decode(synthetic)
@@ -257,7 +380,8 @@ def main():
     if failures:
         print("\n".join(failures))
         return 1
-    print(f"ok: {len(LIVE)} recorded and {len(REASSEMBLED)} reassembled SLMP messages decoded field by field")
+    print(f"ok: {len(LIVE)} 3E/4E, {len(ONE_E)} 1E, {len(EXTENDED)} station-number-extended recorded and "
+          f"{len(REASSEMBLED)} reassembled SLMP messages decoded field by field")
     return 0
 
 
