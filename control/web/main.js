@@ -26,7 +26,8 @@ async function main() {
   // A station page starts timers, an event stream and its panels; rather than
   // tear them down piecemeal, moving to another page (a station's link, the
   // plant link, Back) loads the page afresh for the new address.
-  window.addEventListener('hashchange', () => location.reload());
+  const shown = stationInHash();
+  window.addEventListener('hashchange', () => { if (stationInHash() !== shown) location.reload(); });
   let stations = [];
   try {
     stations = await api('GET', '/api/stations');
@@ -34,14 +35,13 @@ async function main() {
     showMessage(`stations: ${e.message}`);   // still show the (first) station
   }
   const isPlant = stations.some((s) => s.name !== '');
-  const wanted = stationInHash();
-  if (isPlant && wanted !== null && stations.some((s) => s.name === wanted)) {
-    station.name = wanted;
-    station.base = `/api/stations/${encodeURIComponent(wanted)}`;
+  if (isPlant && shown !== null && stations.some((s) => s.name === shown)) {
+    station.name = shown;
+    station.base = `/api/stations/${encodeURIComponent(shown)}`;
   } else if (isPlant) {
     document.body.dataset.view = 'plant';
     startPlant(stations);
-    if (wanted !== null) showMessage(`no station '${wanted}' in this plant; pick one below`);
+    if (shown !== null) showMessage(`no station '${shown}' in this plant; pick one below`);
     return;
   }
   showStationPage(isPlant);

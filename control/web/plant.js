@@ -2,8 +2,9 @@
 // (docs/plants.md). One row per station from GET /api/stations, polled every
 // second; requests/s is the change of a station's request count between two
 // polls. The filter box hides rows client-side (a name containing the text,
-// any case) and keeps the text in the address as ?filter=, so a link or a
-// reload opens the same view. Each name opens that station's page.
+// any case) and keeps the text in the address as #/?filter=TEXT, so a link or
+// a reload opens the same view. Each name opens that station's page.
+// (In the fragment, not the query: the server serves / with no parameters.)
 // Uses api(), showMessage() and $() from app.js.
 'use strict';
 
@@ -37,10 +38,8 @@ function slmpPorts(s) {
 function stationRow(s) {
   const row = document.createElement('tr');
   row.dataset.station = s.name;
-  for (const name of ['name', 'type', 'state', 'slmp', 'connections', 'requests', 'rate', 'errors']) {
-    const cell = row.insertCell();
-    cell.className = name;
-  }
+  // data-column, not a class: .state and friends already style the header.
+  for (const column of ['name', 'type', 'state', 'slmp', 'connections', 'requests', 'rate', 'errors']) row.insertCell().dataset.column = column;
   const link = document.createElement('a');
   link.href = `#/stations/${encodeURIComponent(s.name)}`;
   link.textContent = s.name;
@@ -117,13 +116,15 @@ async function pollStations() {
 function startPlant(stations) {
   document.title = `plant (${stations.length} stations) — slmp-sim monitor`;
   const filter = $('#station-filter');
-  filter.value = new URLSearchParams(location.search).get('filter') || '';
+  const filterInHash = () => new URLSearchParams(location.hash.split('?')[1] || '').get('filter') || '';
+  filter.value = filterInHash();
   filter.addEventListener('input', () => {
-    const url = new URL(location.href);
-    if (filter.value) url.searchParams.set('filter', filter.value); else url.searchParams.delete('filter');
-    history.replaceState(null, '', url);
+    // replaceState: no history entry per keystroke, and no hashchange.
+    history.replaceState(null, '', filter.value ? `#/?filter=${encodeURIComponent(filter.value)}` : '#/');
     applyFilter();
   });
+  // The address edited by hand (main.js reloads only for another station).
+  window.addEventListener('hashchange', () => { filter.value = filterInHash(); applyFilter(); });
   showStations(stations, performance.now());
   setInterval(pollStations, PLANT_POLL_MS);
 }
