@@ -66,6 +66,12 @@ async function main() {
       await page.waitForFunction(() => document.querySelector('#live').textContent === 'live');
     });
 
+    await check('a one-station process opens on its station page: no overview, no plant link', async () => {
+      if ((await page.getAttribute('body', 'data-view')) !== 'station') throw new Error('not the station page');
+      if (await page.isVisible('#plant-view')) throw new Error('the plant overview shows');
+      if (await page.isVisible('#plant-link') || await page.isVisible('#station-name')) throw new Error('plant header items show');
+    });
+
     await check('watches D100-D109, M0-M15 and X0-X1F can be added', async () => {
       await page.fill('#watch-input', 'D100-D109, M0-M15, X0-X1F');
       await page.click('#watch-add');
