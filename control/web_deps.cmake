@@ -10,11 +10,14 @@ set(SLMP_UPLOT_DIR ${WEB_DEPS_DIR}/node_modules/uplot CACHE PATH
 set(WEB_DEPS_FILES ${SLMP_UPLOT_DIR}/dist/uPlot.iife.min.js ${SLMP_UPLOT_DIR}/dist/uPlot.min.css)
 
 set(fix "run scripts/setup.sh (or: cd ${WEB_DEPS_DIR} && npm ci)")
-foreach(file IN LISTS WEB_DEPS_FILES)
+foreach(file IN LISTS WEB_DEPS_FILES ITEMS ${SLMP_UPLOT_DIR}/LICENSE)
   if(NOT EXISTS ${file})
     message(FATAL_ERROR "the web monitor embeds ${file}, which is missing; ${fix}")
   endif()
 endforeach()
+# uPlot is MIT-licensed: its notice travels with it, served as /uPlot.LICENSE.txt.
+configure_file(${SLMP_UPLOT_DIR}/LICENSE ${CMAKE_CURRENT_BINARY_DIR}/uPlot.LICENSE.txt COPYONLY)
+list(APPEND WEB_DEPS_FILES ${CMAKE_CURRENT_BINARY_DIR}/uPlot.LICENSE.txt)
 
 # node_modules left from an older package-lock.json would embed the wrong
 # version silently; the lock file names the one the monitor was written for.
