@@ -4,10 +4,12 @@
 # command, ports and files. tests/deploy/ keeps the two in step (docs/deploy.md).
 FROM debian:12 AS build
 RUN apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-      g++ cmake ninja-build libboost-dev libboost-program-options-dev nlohmann-json3-dev libspdlog-dev catch2 \
+      g++ cmake ninja-build libboost-dev libboost-program-options-dev nlohmann-json3-dev libspdlog-dev catch2 npm \
     && rm -rf /var/lib/apt/lists/*
 WORKDIR /src
 COPY . .
+# uPlot, which the web monitor embeds (pinned by control/web-deps/package-lock.json).
+RUN cd control/web-deps && npm ci --no-audit --no-fund --loglevel=error
 RUN cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF && cmake --build build --target slmp-sim
 
 FROM debian:12-slim

@@ -1,5 +1,6 @@
-# Writes web_files.cpp: every file of control/web/ as a string, so the web
-# monitor needs no files beside the binary. Called by control/CMakeLists.txt.
+# Writes web_files.cpp: every file of control/web/ and the third-party ones of
+# control/web_deps.cmake as a string, so the web monitor needs no files beside
+# the binary. Called by control/CMakeLists.txt.
 string(REPLACE "|" ";" FILES "${FILES}")
 set(body "// Generated from control/web/ by embed_web.cmake; do not edit.\n")
 string(APPEND body "#include \"control/web_files.hpp\"\n\nnamespace slmp::control {\n\n")
@@ -15,6 +16,8 @@ foreach(file IN LISTS FILES)
     set(type "text/css; charset=utf-8")
   elseif(ext STREQUAL ".svg")
     set(type "image/svg+xml")
+  elseif(ext STREQUAL ".txt")
+    set(type "text/plain; charset=utf-8")
   else()
     message(FATAL_ERROR "embed_web.cmake: no content type for ${file}; add its extension here")
   endif()

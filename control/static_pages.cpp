@@ -1,5 +1,6 @@
 // GET / and the monitor's scripts and styles (web_files.hpp). The page is
-// plain HTML/JS/CSS: no build step, no third-party code.
+// plain HTML/JS/CSS with no build step; its one third-party library, uPlot
+// (the trend plots), is served as its npm package ships it.
 #include "control/api.hpp"
 #include "control/web_files.hpp"
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing (Debian packages; the npm client used by the interop
-# tests), then configures and builds slmp-sim in build/. Safe to run again:
+# Installs what is missing (Debian packages; the npm packages of the interop and
+# browser tests and uPlot, which the web monitor embeds), then configures and
+# builds slmp-sim in build/. Safe to run again:
 # it only installs what is absent and ccache keeps rebuilds short.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -42,6 +43,14 @@ fi
 if [ -f tests/browser/package.json ] && [ ! -d tests/browser/node_modules ]; then
   echo "setup: installing npm packages for tests/browser"
   (cd tests/browser && npm ci --no-audit --no-fund --loglevel=error)
+fi
+
+# uPlot, which the build embeds into the web monitor (control/web_deps.cmake);
+# installed again when package-lock.json is newer than what npm ci last wrote.
+if [ ! -f control/web-deps/node_modules/.package-lock.json ] ||
+   [ control/web-deps/package-lock.json -nt control/web-deps/node_modules/.package-lock.json ]; then
+  echo "setup: installing npm packages for control/web-deps"
+  (cd control/web-deps && npm ci --no-audit --no-fund --loglevel=error)
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null

@@ -1,8 +1,22 @@
-// The slmp-sim web monitor: device watch lists that update live, in-place
-// editing, the open connections, running scenarios with their fault counts
-// and a call monitor of recent requests.
-// Talks only to the simulator's own HTTP API (docs/api.md); no libraries.
+// The slmp-sim web monitor's station page: device watch lists that update
+// live, in-place editing, the open connections, running scenarios with their
+// fault counts and a call monitor of recent requests. main.js decides which
+// station it shows; labels.js and trend.js add their panels.
+// Talks only to the simulator's own HTTP API (docs/api.md).
 'use strict';
+
+// The station this page shows. Every API call of the station page (here, in
+// labels.js and trend.js) is stationPath('/devices/...'), so the prefix lives
+// only here: '/api' in a one-station process, '/api/stations/NAME' for a
+// station of a plant (main.js sets it before anything is fetched).
+const station = { name: '', base: '/api' };
+
+function stationPath(rest) { return station.base + rest; }
+
+// What the browser remembers (watches, plotted series) is per station: a
+// plant's stations each keep their own; a one-station process keeps the key
+// it always had.
+function storageKey(what) { return station.name ? `slmp-sim.${what}.${station.name}` : `slmp-sim.${what}`; }
 
 const state = {
   devices: new Map(),   // symbol -> {unit, radix, name}, from /api/info
@@ -14,7 +28,6 @@ const state = {
 };
 const MAX_WATCH_DEVICES = 1024;
 const MAX_CALL_ROWS = 200;
-const STORAGE_KEY = 'slmp-sim.watches';
 
 const $ = (selector, root = document) => root.querySelector(selector);
 
@@ -107,7 +120,7 @@ function parseInput(text) {
 
 function saveWatches() {
   const saved = state.watches.map(w => ({ symbol: w.symbol, start: w.start, count: w.count, format: w.format }));
-  localStorage.setItem(STORAGE_KEY, JSON.stringify(saved));
+  localStorage.setItem(storageKey('watches'), JSON.stringify(saved));
 }
 
 function watchTitle(w) {
@@ -181,7 +194,7 @@ function render(w, changed = new Set()) {
 
 async function refreshWatch(w) {
   try {
-    const data = await api('GET', `/api/devices/${formatAddress(w.symbol, w.start)}?count=${w.count}`);
+    const data = await api('GET', stationPath(`/devices/${formatAddress(w.symbol, w.start)}?count=${w.count}`));
     const changed = new Set();
     data.values.forEach((v, i) => { if (w.values[i] !== null && w.values[i] !== v) changed.add(i); w.values[i] = v; });
     render(w, changed);
@@ -197,7 +210,7 @@ function refreshAll() { state.watches.forEach(refreshWatch); }
 async function write(w, i, value) {
   const address = formatAddress(w.symbol, w.start + i);
   try {
-    await api('PUT', `/api/devices/${address}`, { values: [value] });
+    await api('PUT', stationPath(`/devices/${address}`), { values: [value] });
     // The event stream brings the new value; without it, read it back.
     if (!state.live) await refreshWatch(w);
   } catch (e) {
@@ -257,7 +270,7 @@ function applyWrite(event) {
 
 async function refreshConnections() {
   try {
-    const data = await api('GET', '/api/connections');
+    const data = await api('GET', stationPath('/connections'));
     const body = $('#connections tbody');
     body.replaceChildren();
     for (const c of data.connections) {
@@ -268,7 +281,7 @@ async function refreshConnections() {
       button.textContent = 'Close';
       button.title = 'Close this connection';
       button.addEventListener('click', async () => {
-        try { await api('DELETE', `/api/connections/${c.id}`); } catch (e) { showMessage(e.message); }
+        try { await api('DELETE', stationPath(`/connections/${c.id}`)); } catch (e) { showMessage(e.message); }
         refreshConnections();
       });
       row.insertCell().append(button);
@@ -284,7 +297,7 @@ async function refreshConnections() {
 // Polled: fault counts change with every request, too often for events.
 async function refreshScenarios() {
   try {
-    const [s, f] = await Promise.all([api('GET', '/api/scenarios'), api('GET', '/api/faults')]);
+    const [s, f] = await Promise.all([api('GET', stationPath('/scenarios')), api('GET', stationPath('/faults'))]);
     const scenarios = $('#scenarios tbody');
     scenarios.replaceChildren();
     for (const sc of s.scenarios) {
@@ -295,7 +308,7 @@ async function refreshScenarios() {
       button.textContent = 'Stop';
       button.title = 'Stop this scenario (its devices keep their values)';
       button.addEventListener('click', async () => {
-        try { await api('DELETE', `/api/scenarios/${encodeURIComponent(sc.name)}`); } catch (e) { showMessage(e.message); }
+        try { await api('DELETE', stationPath(`/scenarios/${encodeURIComponent(sc.name)}`)); } catch (e) { showMessage(e.message); }
         refreshScenarios();
       });
       row.insertCell().append(button);
@@ -313,7 +326,7 @@ async function refreshScenarios() {
       toggle.checked = fault.enabled;
       toggle.title = 'Turn this fault on or off';
       toggle.addEventListener('change', async () => {
-        try { await api('PUT', `/api/faults/${encodeURIComponent(fault.id)}`, { enabled: toggle.checked }); } catch (e) { showMessage(e.message); }
+        try { await api('PUT', stationPath(`/faults/${encodeURIComponent(fault.id)}`), { enabled: toggle.checked }); } catch (e) { showMessage(e.message); }
         refreshScenarios();
       });
       row.insertCell().append(toggle);
@@ -357,7 +370,7 @@ function addPush(push) {
 
 async function refreshState() {
   try {
-    const s = await api('GET', '/api/state');
+    const s = await api('GET', stationPath('/state'));
     const badge = $('#state');
     badge.textContent = s.state + (s.cause ? ` (${s.cause}${s.error ? ' ' + s.error.code : ''})` : '');
     badge.className = `state ${s.state.toLowerCase()}`;
@@ -369,7 +382,7 @@ async function refreshState() {
 }
 
 async function setSwitch(position) {
-  try { await api('PUT', '/api/state', { switch: position }); } catch (e) { showMessage(e.message); }
+  try { await api('PUT', stationPath('/state'), { switch: position }); } catch (e) { showMessage(e.message); }
   refreshState();
 }
 
@@ -386,7 +399,7 @@ function setLive(live, text) {
 }
 
 function connectEvents() {
-  const source = new EventSource('/api/events');
+  const source = new EventSource(stationPath('/events'));
   source.onopen = () => { setLive(true, 'live'); refreshAll(); refreshConnections(); };
   source.onerror = () => setLive(false, 'polling (event stream lost)');
   source.addEventListener('devices', (e) => applyWrite(JSON.parse(e.data)));
@@ -398,13 +411,13 @@ function connectEvents() {
 
 // ------------------------------------------------------------------ start --
 
-async function start() {
-  const info = await api('GET', '/api/info');
+async function startStation() {
+  const info = await api('GET', stationPath('/info'));
   for (const d of info.devices) state.devices.set(d.symbol, d);
   $('#cpu').textContent = `${info.profile.type_name} (${info.profile.name}, ${info.profile.family})`;
   const ports = info.ports;
   $('#ports').textContent = `SLMP TCP ${ports.tcp.join(', ') || '—'} · UDP ${ports.udp.join(', ') || '—'}`;
-  document.title = `${info.profile.name} — slmp-sim monitor`;
+  document.title = `${station.name ? station.name + ' · ' : ''}${info.profile.name} — slmp-sim monitor`;
   if (info.timing) $('#timing').textContent = `timing ${info.timing.mode}`;
 
   $('#watch-form').addEventListener('submit', (event) => {
@@ -430,7 +443,7 @@ async function start() {
   refreshScenarios();
   setInterval(refreshScenarios, 2000);
 
-  const saved = JSON.parse(localStorage.getItem(STORAGE_KEY) || '[]');
+  const saved = JSON.parse(localStorage.getItem(storageKey('watches')) || '[]');
   for (const s of saved) {
     const spec = state.devices.get(s.symbol);
     if (spec) addWatch({ symbol: s.symbol, spec, start: s.start, count: s.count }, s.format);
@@ -439,5 +452,3 @@ async function start() {
   setLive(false, 'connecting…');
   connectEvents();
 }
-
-start().catch((e) => showMessage(`cannot start the monitor: ${e.message}`));

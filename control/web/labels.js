@@ -2,7 +2,7 @@
 // (structures open into their members, timer-family labels into S/C/N), each
 // leaf with its values, kept fresh by a light poll (label-area writes raise no
 // device events). Click a number or text to edit it, a bit to toggle it.
-// Uses api(), showMessage() and $() from app.js; docs/api.md "Labels".
+// Uses api(), stationPath(), showMessage() and $() from app.js; docs/api.md "Labels".
 'use strict';
 
 const TIMER_TYPES = new Set(['Timer', 'Counter', 'Retentive Timer', 'Long Timer', 'Long Counter', 'Long Retentive Timer']);
@@ -51,7 +51,7 @@ function expandLabel(name, type, structures, depth, out) {
   for (const m of structure.members) expandLabel(`${name}.${m.name}`, m.type, structures, depth + 1, out);
 }
 
-function labelPath(name) { return `/api/labels/${encodeURIComponent(name)}`; }
+function labelPath(name) { return stationPath(`/labels/${encodeURIComponent(name)}`); }
 
 function showLabelValue(value) { return typeof value === 'string' ? JSON.stringify(value) : String(value); }
 
@@ -149,7 +149,7 @@ function buildLabelRows(leaves) {
 function refreshLabels() { labelState.leaves.filter((l) => !l.heading).forEach(refreshLeaf); }
 
 async function startLabels() {
-  const data = await api('GET', '/api/labels');
+  const data = await api('GET', stationPath('/labels'));
   if (!data.labels.length) return;   // the panel stays hidden
   const structures = new Map(data.structures.map((s) => [s.name, s]));
   const leaves = [];
@@ -162,5 +162,3 @@ async function startLabels() {
   refreshLabels();
   labelState.timer = setInterval(refreshLabels, 1000);
 }
-
-startLabels().catch((e) => showMessage(`labels: ${e.message}`));

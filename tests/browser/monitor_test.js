@@ -1,6 +1,6 @@
 #!/usr/bin/env node
 // The web monitor in a real headless Chromium (Debian's /usr/bin/chromium,
-// driven by playwright-core; no browser is downloaded) against the real
+// driven by playwright-core; no browser is downloaded; harness.js) against the real
 // slmp-sim binary: load the page, add watches, see values written over SLMP
 // appear live, edit values in the page and read them back over SLMP; the
 // scenario loaded with --scenario and its fault show with their fire counts;
@@ -11,42 +11,13 @@
 // Prints one line per check and "N passed, N failed"; exits non-zero on failure.
 'use strict';
 
-const childProcess = require('child_process');
 const fs = require('fs');
-const net = require('net');
-const os = require('os');
 const path = require('path');
-const { chromium } = require('playwright-core');
+const {
+  parseArgs, check, run, out, eventually, tempDir, startSim, stopSim, launchBrowser, SlmpClient,
+} = require('./harness');
 
-const args = process.argv.slice(2);
-const screenshotAt = args.indexOf('--screenshot');
-const screenshotFile = screenshotAt >= 0 ? args.splice(screenshotAt, 2)[1] : null;
-const binary = args[0] || process.env.SLMP_SIM_BINARY || path.join(__dirname, '../../build/server/slmp-sim');
-const browserPath = process.env.CHROMIUM || '/usr/bin/chromium';
-const WAIT_MS = 10000;   // upper bound for anything to show up; never a fixed sleep
-
-let passed = 0;
-let failed = 0;
-const out = (line) => process.stdout.write(line + '\n');
-
-async function check(name, body) {
-  try {
-    await body();
-    passed++;
-    out(`ok   - ${name}`);
-  } catch (e) {
-    failed++;
-    out(`FAIL - ${name}: ${e.message}`);
-  }
-}
-
-function withTimeout(promise, ms, what) {
-  let timer;
-  return Promise.race([promise, new Promise((_, reject) => { timer = setTimeout(() => reject(new Error(`${what}: no result within ${ms} ms`)), ms); })])
-    .finally(() => clearTimeout(timer));
-}
-
-// ------------------------------------------------------------------ slmp-sim --
+const { binary, screenshot: screenshotFile, browserPath } = parseArgs(process.argv);
 
 // A scenario whose one fault answers C051 to word reads of D200-D209 (and
 // nothing else the checks below do).
@@ -70,140 +41,35 @@ const LABELS = {
   ],
 };
 
-async function startSim(dir) {
-  const readyFile = path.join(dir, 'ready.json');
+// --------------------------------------------------------------------- main --
+
+async function main() {
+  const dir = tempDir();
   const scenarioFile = path.join(dir, 'scenario.json');
   const labelsFile = path.join(dir, 'labels.json');
   fs.writeFileSync(scenarioFile, JSON.stringify(SCENARIO));
   fs.writeFileSync(labelsFile, JSON.stringify(LABELS));
-  const sim = childProcess.spawn(binary, ['--tcp-port', '0', '--udp-port', '0', '--http-port', '0', '--bind', '127.0.0.1',
-    '--ready-file', readyFile, '--log-level', 'warn', '--scenario', scenarioFile, '--labels', labelsFile], { stdio: ['ignore', 'inherit', 'inherit'] });
-  const exited = new Promise((resolve) => sim.on('exit', (code, signal) => resolve({ code, signal })));
-  const deadline = Date.now() + WAIT_MS;
-  while (Date.now() < deadline) {
-    if (sim.exitCode !== null) throw new Error(`slmp-sim exited early with ${sim.exitCode}`);
-    try {
-      return { sim, exited, ports: JSON.parse(fs.readFileSync(readyFile, 'utf8')) };
-    } catch { /* not written yet */ }
-    await new Promise((r) => setTimeout(r, 20));
-  }
-  sim.kill('SIGKILL');
-  throw new Error('slmp-sim wrote no ready file within 10 s');
-}
-
-// ------------------------------------------------------- a tiny SLMP client --
-// 3E binary frames built by hand from the manual's layout, so the test does
-// not share code with the simulator: subheader 5000, own-station route
-// 00 FF 03FF 00, data length, monitoring timer 0010, command, subcommand.
-
-const DEVICE_CODES = { D: 0xA8, M: 0x90 };
-
-function frame(command, subcommand, data) {
-  const body = Buffer.concat([Buffer.from([0x10, 0x00, command & 0xFF, command >> 8, subcommand & 0xFF, subcommand >> 8]), data]);
-  const head = Buffer.from([0x50, 0x00, 0x00, 0xFF, 0xFF, 0x03, 0x00, body.length & 0xFF, body.length >> 8]);
-  return Buffer.concat([head, body]);
-}
-
-function deviceField(symbol, number, points) {
-  return Buffer.from([number & 0xFF, (number >> 8) & 0xFF, (number >> 16) & 0xFF, DEVICE_CODES[symbol], points & 0xFF, points >> 8]);
-}
-
-class SlmpClient {
-  constructor(port) { this.port = port; this.pending = Buffer.alloc(0); this.waiter = null; }
-
-  connect() {
-    return withTimeout(new Promise((resolve, reject) => {
-      this.socket = net.connect(this.port, '127.0.0.1', resolve);
-      this.socket.on('error', reject);
-      this.socket.on('data', (chunk) => { this.pending = Buffer.concat([this.pending, chunk]); if (this.waiter) this.waiter(); });
-    }), WAIT_MS, 'SLMP connect');
-  }
-
-  // Sends a request and returns the response data after the end code; throws on a non-zero end code.
-  async exchange(request) {
-    this.socket.write(request);
-    const response = await withTimeout(new Promise((resolve) => {
-      const tryTake = () => {
-        if (this.pending.length < 9) return;
-        const size = 9 + this.pending.readUInt16LE(7);
-        if (this.pending.length < size) return;
-        const whole = this.pending.subarray(0, size);
-        this.pending = this.pending.subarray(size);
-        this.waiter = null;
-        resolve(whole);
-      };
-      this.waiter = tryTake;
-      tryTake();
-    }), WAIT_MS, 'SLMP response');
-    const endCode = response.readUInt16LE(9);
-    if (endCode !== 0) throw new Error(`end code ${endCode.toString(16).padStart(4, '0').toUpperCase()}`);
-    return response.subarray(11);
-  }
-
-  writeWords(symbol, number, words) {
-    const data = Buffer.alloc(words.length * 2);
-    words.forEach((w, i) => data.writeUInt16LE(w & 0xFFFF, i * 2));
-    return this.exchange(frame(0x1401, 0x0000, Buffer.concat([deviceField(symbol, number, words.length), data])));
-  }
-
-  async readWords(symbol, number, count) {
-    const data = await this.exchange(frame(0x0401, 0x0000, deviceField(symbol, number, count)));
-    return Array.from({ length: count }, (_, i) => data.readUInt16LE(i * 2));
-  }
-
-  writeBits(symbol, number, bits) {
-    const data = Buffer.alloc(Math.ceil(bits.length / 2));
-    bits.forEach((b, i) => { if (b) data[i >> 1] |= i % 2 === 0 ? 0x10 : 0x01; });
-    return this.exchange(frame(0x1401, 0x0001, Buffer.concat([deviceField(symbol, number, bits.length), data])));
-  }
-
-  async readBits(symbol, number, count) {
-    const data = await this.exchange(frame(0x0401, 0x0001, deviceField(symbol, number, count)));
-    return Array.from({ length: count }, (_, i) => (i % 2 === 0 ? data[i >> 1] >> 4 : data[i >> 1]) & 0x1);
-  }
-
-  close() { this.socket.destroy(); }
-}
-
-// Polls `read` until it returns `want` (bounded by WAIT_MS).
-async function eventually(read, want, what) {
-  const deadline = Date.now() + WAIT_MS;
-  let got;
-  while (Date.now() < deadline) {
-    got = await read();
-    if (JSON.stringify(got) === JSON.stringify(want)) return;
-    await new Promise((r) => setTimeout(r, 25));
-  }
-  throw new Error(`${what}: expected ${JSON.stringify(want)}, got ${JSON.stringify(got)}`);
-}
-
-// --------------------------------------------------------------------- main --
-
-async function main() {
-  if (!fs.existsSync(binary)) throw new Error(`no slmp-sim at ${binary}; build first or pass its path`);
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'slmp-browser-'));
-  const { sim, exited, ports } = await startSim(dir);
+  const simulator = await startSim(binary, ['--tcp-port', '0', '--udp-port', '0', '--http-port', '0', '--bind', '127.0.0.1',
+    '--scenario', scenarioFile, '--labels', labelsFile], dir);
+  const ports = simulator.ready;
   const url = `http://127.0.0.1:${ports.http}/`;
   let context;
   const slmp = new SlmpClient(ports.tcp[0]);
   try {
-    // A persistent context on a fresh directory is Chromium's --user-data-dir.
-    context = await chromium.launchPersistentContext(path.join(dir, 'profile'), {
-      executablePath: browserPath,
-      headless: true,
-      viewport: { width: 1280, height: 900 },
-      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-        '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-    });
-    const page = context.pages()[0] || await context.newPage();
-    page.setDefaultTimeout(WAIT_MS);
-    const pageErrors = [];
-    page.on('pageerror', (e) => pageErrors.push(e.message));
+    const browser = await launchBrowser(browserPath, dir);
+    context = browser.context;
+    const { page, pageErrors } = browser;
 
     await check('the monitor loads and names the CPU', async () => {
       await page.goto(url);
       await page.waitForFunction(() => document.querySelector('#cpu').textContent.includes('R08CPU'));
       await page.waitForFunction(() => document.querySelector('#live').textContent === 'live');
+    });
+
+    await check('a one-station process opens on its station page: no overview, no plant link', async () => {
+      if ((await page.getAttribute('body', 'data-view')) !== 'station') throw new Error('not the station page');
+      if (await page.isVisible('#plant-view')) throw new Error('the plant overview shows');
+      if (await page.isVisible('#plant-link') || await page.isVisible('#station-name')) throw new Error('plant header items show');
     });
 
     await check('watches D100-D109, M0-M15 and X0-X1F can be added', async () => {
@@ -334,16 +200,9 @@ async function main() {
   } finally {
     slmp.close();
     if (context) await context.close();
-    sim.kill('SIGTERM');
-    const { code } = await withTimeout(exited, WAIT_MS, 'slmp-sim exit');
-    if (code !== 0) { failed++; out(`FAIL - slmp-sim exited with ${code} after SIGTERM`); }
+    await stopSim(simulator);
     fs.rmSync(dir, { recursive: true, force: true });
   }
 }
 
-main()
-  .catch((e) => { failed++; out(`FAIL - ${e.message}`); })
-  .finally(() => {
-    out(`${passed} passed, ${failed} failed`);
-    process.exit(failed === 0 && passed > 0 ? 0 : 1);
-  });
+run(main);

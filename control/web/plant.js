@@ -1,0 +1,130 @@
+// The plant overview: the start page of a process serving many stations
+// (docs/plants.md). One row per station from GET /api/stations, polled every
+// second; requests/s is the change of a station's request count between two
+// polls. The filter box hides rows client-side (a name containing the text,
+// any case) and keeps the text in the address as #/?filter=TEXT, so a link or
+// a reload opens the same view. Each name opens that station's page.
+// (In the fragment, not the query: the server serves / with no parameters.)
+// Uses api(), showMessage() and $() from app.js.
+'use strict';
+
+const PLANT_POLL_MS = 1000;
+
+const plant = {
+  rows: new Map(),       // station name -> its <tr>
+  previous: new Map(),   // station name -> {requests, at}: the last poll, for the rate
+  polling: false,        // a poll is in flight; the next tick skips rather than piles up
+};
+
+// Requests per second between two polls of one station, each {requests, at}
+// (`at` in ms). null without an earlier poll, or when the count went back.
+function requestRate(before, now) {
+  if (!before || now.at <= before.at || now.requests < before.requests) return null;
+  return (now.requests - before.requests) * 1000 / (now.at - before.at);
+}
+
+function showRate(rate) {
+  if (rate === null) return '—';
+  return rate >= 100 ? rate.toFixed(0) : rate.toFixed(1);
+}
+
+function stationMatches(name, filter) { return name.toLowerCase().includes(filter.trim().toLowerCase()); }
+
+function slmpPorts(s) {
+  const part = (transport, ports) => (ports.length ? `${transport} ${ports.join(', ')}` : '');
+  return [s.bind, part('TCP', s.tcp), part('UDP', s.udp)].filter(Boolean).join(' · ');
+}
+
+function stationRow(s) {
+  const row = document.createElement('tr');
+  row.dataset.station = s.name;
+  // data-column, not a class: .state and friends already style the header.
+  for (const column of ['name', 'type', 'state', 'slmp', 'connections', 'requests', 'rate', 'errors']) row.insertCell().dataset.column = column;
+  const link = document.createElement('a');
+  link.href = `#/stations/${encodeURIComponent(s.name)}`;
+  link.textContent = s.name;
+  row.cells[0].append(link);
+  for (const k of [5, 6, 7]) row.cells[k].classList.add('number');
+  return row;
+}
+
+function updateRow(row, s, rate) {
+  const [, type, stateCell, slmp, connections, requests, rateCell, errors] = row.cells;
+  type.textContent = s.type_name;
+  type.title = `profile ${s.profile}, ${s.family}`;
+  stateCell.replaceChildren();
+  const badge = document.createElement('span');
+  badge.className = `state-badge ${s.state.toLowerCase()}`;
+  badge.textContent = s.state;
+  stateCell.append(badge);
+  slmp.textContent = slmpPorts(s);
+  connections.textContent = s.connections;
+  requests.textContent = s.requests;
+  rateCell.textContent = showRate(rate);
+  errors.textContent = s.errors;
+  errors.classList.toggle('nonzero', s.errors > 0);
+}
+
+function applyFilter() {
+  const filter = $('#station-filter').value;
+  let shown = 0;
+  for (const [name, row] of plant.rows) {
+    row.hidden = !stationMatches(name, filter);
+    if (!row.hidden) shown++;
+  }
+  const total = plant.rows.size;
+  $('#station-count').textContent = shown === total ? `(${total})` : `(${shown} of ${total})`;
+}
+
+function showStations(stations, at) {
+  const body = $('#stations tbody');
+  const seen = new Set();
+  let running = 0;
+  for (const s of stations) {
+    seen.add(s.name);
+    let row = plant.rows.get(s.name);
+    if (!row) {
+      row = stationRow(s);
+      plant.rows.set(s.name, row);
+    }
+    body.append(row);   // keeps the rows in the plant's order
+    const now = { requests: s.requests, at };
+    updateRow(row, s, requestRate(plant.previous.get(s.name), now));
+    plant.previous.set(s.name, now);
+    if (s.state === 'RUN') running++;
+  }
+  for (const [name, row] of plant.rows) {
+    if (!seen.has(name)) { row.remove(); plant.rows.delete(name); plant.previous.delete(name); }
+  }
+  $('#plant-summary').textContent = `plant of ${stations.length} stations · ${running} in RUN`;
+  applyFilter();
+}
+
+async function pollStations() {
+  if (plant.polling) return;
+  plant.polling = true;
+  try {
+    const stations = await api('GET', '/api/stations');
+    showStations(stations, performance.now());
+  } catch (e) {
+    showMessage(`stations: ${e.message}`);
+  } finally {
+    plant.polling = false;
+  }
+}
+
+function startPlant(stations) {
+  document.title = `plant (${stations.length} stations) — slmp-sim monitor`;
+  const filter = $('#station-filter');
+  const filterInHash = () => new URLSearchParams(location.hash.split('?')[1] || '').get('filter') || '';
+  filter.value = filterInHash();
+  filter.addEventListener('input', () => {
+    // replaceState: no history entry per keystroke, and no hashchange.
+    history.replaceState(null, '', filter.value ? `#/?filter=${encodeURIComponent(filter.value)}` : '#/');
+    applyFilter();
+  });
+  // The address edited by hand (main.js reloads only for another station).
+  window.addEventListener('hashchange', () => { filter.value = filterInHash(); applyFilter(); });
+  showStations(stations, performance.now());
+  setInterval(pollStations, PLANT_POLL_MS);
+}
