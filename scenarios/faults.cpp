@@ -44,7 +44,7 @@ std::vector<FaultStats> FaultSet::stats() const {
 bool FaultSet::matches(const Fault& fault, const Incoming& incoming) {
     const auto& r = incoming.request;
     const auto& m = fault.match;
-    if (m.protocol != incoming.protocol) return false;
+    if (m.request_protocol != incoming.request_protocol) return false;
     if (incoming.frontend()) {
         // The loader allows only these keys on a front end's fault.
         const auto& names = m.frontend_commands;
@@ -116,7 +116,7 @@ FaultDecision FaultSet::decide(const Incoming& incoming, double now_ms, const Ev
         }
         if (log)
             log(EventLevel::Info, "fault '" + e.name + "' (" + std::string(to_string(a.kind)) + ") fired on " +
-                                      (incoming.frontend() ? std::string(to_string(incoming.protocol)) + " " + incoming.command_text
+                                      (incoming.frontend() ? std::string(to_string(incoming.request_protocol)) + " " + incoming.command_text
                                        : request.has_command ? protocol::hex4(request.command) + "/" + protocol::hex4(request.subcommand)
                                                              : std::string("a request")) +
                                       incoming.from() + " (" + std::to_string(e.fired) +

@@ -31,25 +31,25 @@ FaultMatch match(const JsonAt& at) {
     FaultMatch m;
     if (at.has("protocol")) {
         auto p = at["protocol"].string();
-        if (p == "slmp") m.protocol = Protocol::Slmp;
-        else if (p == "hostlink") m.protocol = Protocol::HostLink;
-        else if (p == "jw51cm") m.protocol = Protocol::Jw51cm;
+        if (p == "slmp") m.request_protocol = Protocol::Slmp;
+        else if (p == "hostlink") m.request_protocol = Protocol::HostLink;
+        else if (p == "jw51cm") m.request_protocol = Protocol::Jw51cm;
         else at["protocol"].fail("unknown protocol '" + p + "'", "use \"slmp\", \"hostlink\" or \"jw51cm\"");
     }
-    if (m.protocol != Protocol::Slmp) {
+    if (m.request_protocol != Protocol::Slmp) {
         // A front end's request has a command and a peer; nothing SLMP decodes.
         at.only_keys({"protocol", "command", "transport", "connection", "client"});
         if (at.has("command")) {
             auto c = at["command"];
             if (c.json().is_array())
-                for (std::size_t i = 0; i < c.json().size(); ++i) m.frontend_commands.push_back(frontend_command(c[i], m.protocol));
+                for (std::size_t i = 0; i < c.json().size(); ++i) m.frontend_commands.push_back(frontend_command(c[i], m.request_protocol));
             else
-                m.frontend_commands.push_back(frontend_command(c, m.protocol));
+                m.frontend_commands.push_back(frontend_command(c, m.request_protocol));
         }
     } else {
         at.only_keys({"protocol", "command", "subcommand", "devices", "access", "frame", "code", "transport", "connection", "client"});
     }
-    if (at.has("command") && m.protocol == Protocol::Slmp) m.commands = codes(at["command"]);
+    if (at.has("command") && m.request_protocol == Protocol::Slmp) m.commands = codes(at["command"]);
     if (at.has("subcommand")) m.subcommands = codes(at["subcommand"]);
     if (at.has("devices")) m.devices = ranges(at["devices"]);
     if (at.has("access")) m.access = access(at["access"]);
@@ -140,16 +140,16 @@ std::uint8_t frontend_code(const JsonAt& at, Protocol protocol) {
     return code;
 }
 
-FaultAction action(const JsonAt& at, const KindInfo& k, Protocol protocol) {
+FaultAction action(const JsonAt& at, const KindInfo& k, Protocol request_protocol) {
     FaultAction a;
     a.kind = k.kind;
-    if (protocol != Protocol::Slmp && !frontend_kind(k.kind))
-        at["do"].fail("a \"" + std::string(k.name) + "\" fault does not act on " + std::string(to_string(protocol)) + " requests",
+    if (request_protocol != Protocol::Slmp && !frontend_kind(k.kind))
+        at["do"].fail("a \"" + std::string(k.name) + "\" fault does not act on " + std::string(to_string(request_protocol)) + " requests",
                       "use end_code, delay, no_response, close or reset");
     switch (k.kind) {
         case FaultKind::EndCode:
-            if (protocol != Protocol::Slmp) {
-                a.frontend_code = frontend_code(at["end_code"], protocol);
+            if (request_protocol != Protocol::Slmp) {
+                a.frontend_code = frontend_code(at["end_code"], request_protocol);
                 break;
             }
             a.end_code = protocol::end_code(at["end_code"].hex_code());
@@ -205,7 +205,7 @@ Fault fault(const JsonAt& at) {
     if (at.has("id")) f.id = at["id"].string();
     if (at.has("enabled")) f.enabled = at["enabled"].boolean();
     if (at.has("match")) f.match = match(at["match"]);
-    f.action = action(at, k, f.match.protocol);
+    f.action = action(at, k, f.match.request_protocol);
     if (at.has("skip")) f.skip = at["skip"].unsigned_int(1ull << 53);
     if (at.has("count")) {
         f.count = at["count"].unsigned_int(1ull << 53);

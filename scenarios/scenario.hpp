@@ -119,7 +119,7 @@ struct FaultMatch {
     std::optional<std::string> client;            // the client's IP address
     // A fault matches one protocol's requests (SLMP unless "protocol" says
     // otherwise); a front end's commands by their text ("RD", "24").
-    Protocol protocol = Protocol::Slmp;
+    Protocol request_protocol = Protocol::Slmp;
     std::vector<std::string> frontend_commands;   // empty: any
 };
 

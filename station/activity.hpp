@@ -47,8 +47,8 @@ struct PushRecord {
 // reported like an SLMP one (docs/hostlink.md, docs/jw51cm.md). Valid only during the call.
 struct FrontEndRecord {
     std::string_view protocol;                 // "hostlink", "jw51cm"
-    std::uint64_t connection = 0;              // TCP connection id (0: a UDP datagram)
-    const protocol::Peer& peer;
+    std::uint64_t connection = 0;              // TCP connection id, or the UDP port's session id
+    const slmp::protocol::Peer& peer;          // (qualified: `protocol` is a member here)
     std::string_view command;                  // "RD", "24" (JW COM in hex); empty: none could be read
     bool known = false;                        // the command is in the front end's table (metrics name others "other")
     std::string_view name;                     // the command table's name for it; empty when unknown

@@ -15,7 +15,7 @@ FrontEndCall::FrontEndCall(Station& station, scenarios::Protocol protocol, std::
 
 frontends::Gate FrontEndCall::gate() {
     return [this](std::string_view command) {
-        incoming_.protocol = protocol_;
+        incoming_.request_protocol = protocol_;
         incoming_.command_text = std::string(command);
         incoming_.peer = peer_;
         plan_ = station_.scenario().frontend_before(incoming_, connection_);

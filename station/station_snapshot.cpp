@@ -12,6 +12,7 @@
 
 #include "config/config.hpp"
 #include "devicemodel/snapshot.hpp"
+#include "station/persistence.hpp"
 #include "station/scan_loop.hpp"
 #include "station/station.hpp"
 
