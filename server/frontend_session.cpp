@@ -75,13 +75,14 @@ awaitable<void> FrontEndSession::serve() {
         // (unless a scenario fault delays one or closes the connection).
         std::string out;
         std::size_t offset = 0;
-        bool closing = false;
+        bool closing = false, resetting = false;
         while (offset < pending.size()) {
             auto step = handler_(std::span<const std::uint8_t>(pending).subspan(offset), id_, peer_);
             if (step.need_more) break;
             offset += step.consumed;
             if (step.close || step.reset) {
                 closing = true;
+                resetting = step.reset;
                 if (step.reset) socket_.set_option(asio::socket_base::linger(true, 0), ec);
                 close_reason_ = std::string("scenario fault: connection ") + (step.reset ? "reset (RST)" : "closed (FIN)");
                 break;
@@ -99,6 +100,7 @@ awaitable<void> FrontEndSession::serve() {
         }
         if (closing) {
             co_await send(out);
+            if (resetting) socket_.close(ec);   // with linger 0 and no shutdown (FIN) first: an RST
             break;
         }
         pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(offset));

@@ -55,13 +55,13 @@ Bytes jw(std::uint8_t id, Bytes after_id) {
 Bytes jw_request(Bytes after_id) { return jw(0x47, std::move(after_id)); }
 Bytes jw_response(Bytes after_id) { return jw(0x45, std::move(after_id)); }
 
-std::string hex(const std::string& text) {
+std::string hex_of(const std::string& text) {
     static constexpr char digits[] = "0123456789abcdef";
     std::string out;
     for (unsigned char c : text) out += {digits[c >> 4], digits[c & 0xF]};
     return out;
 }
-std::string hex(const Bytes& bytes) { return hex(std::string(bytes.begin(), bytes.end())); }
+std::string hex_of(const Bytes& bytes) { return hex_of(std::string(bytes.begin(), bytes.end())); }
 
 std::map<std::string, double> samples(const std::string& text) {
     std::map<std::string, double> out;
@@ -123,8 +123,8 @@ TEST_CASE("host link requests: metrics with a protocol label, request events, re
     CHECK(call["end_code"] == "00");
     CHECK(call["reaction"] == "answered");
     CHECK(call["transport"] == "tcp");
-    CHECK(call["request"] == hex(write));
-    CHECK(call["response"] == hex(record("@00WD00")));
+    CHECK(call["request"] == hex_of(write));
+    CHECK(call["response"] == hex_of(record("@00WD00")));
     CHECK(call["bytes_in"] == write.size());
     // The writes the record made are published under its protocol, peer and connection.
     auto devices = events.next_of("devices").data;
@@ -152,8 +152,8 @@ TEST_CASE("host link requests: metrics with a protocol label, request events, re
     REQUIRE(lines.size() == 4);
     CHECK(lines[0]["command"] == "WD");
     CHECK(lines[0]["code"] == "00");
-    CHECK(lines[0]["request"] == hex(write));
-    CHECK(lines[0]["response"] == hex(record("@00WD00")));
+    CHECK(lines[0]["request"] == hex_of(write));
+    CHECK(lines[0]["response"] == hex_of(record("@00WD00")));
     CHECK(lines[2]["code"] == "IC");
     CHECK(exchanges(file, "slmp").empty());
 }
@@ -171,7 +171,7 @@ TEST_CASE("JW-51CM requests: metrics, request events and the recording, TCP and 
     CHECK(call["protocol"] == "jw51cm");
     CHECK(call["command"] == "E9");
     CHECK(call["end_code"] == "00");
-    CHECK(call["request"] == hex(jw_request({0xE9})));
+    CHECK(call["request"] == hex_of(jw_request({0xE9})));
     // Mode 0: a register write is refused with RSLT 10.
     REQUIRE(client.send(jw_request({0x34, 0x00, 0x00, 0x08, 0x01, 0x00, 0x12})));
     CHECK(client.read_exactly(44) == jw_response({0x34, 0x10}));
