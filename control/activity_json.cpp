@@ -3,6 +3,7 @@
 #include "control/hex_text.hpp"
 #include "control/request_summary.hpp"
 #include "control/timestamp.hpp"
+#include "scenarios/recording.hpp"
 
 namespace slmp::control {
 
@@ -39,6 +40,7 @@ json request_json(const station::RequestRecord& record) {
     // header, an oversized length) has command and subcommand 0.
     bool decoded = outcome.command != 0 || outcome.subcommand != 0;
     json out{{"time", iso_time(std::chrono::system_clock::now())},
+             {"protocol", "slmp"},
              {"connection", record.connection},
              {"transport", protocol::to_string(record.peer.transport)},
              {"peer", record.peer.text()},
@@ -59,6 +61,28 @@ json request_json(const station::RequestRecord& record) {
         out["unit"] = devices->unit;
     }
     return out;
+}
+
+json frontend_request_json(const station::FrontEndRecord& record) {
+    std::string note;
+    for (const auto& f : record.faults) note += (note.empty() ? "scenario fault '" : ", '") + f + "'";
+    if (!note.empty()) note += record.closed ? ": connection closed" : record.code.empty() ? ": not answered" : "";
+    return json{{"time", iso_time(std::chrono::system_clock::now())},
+                {"protocol", record.protocol},
+                {"connection", record.connection},
+                {"transport", protocol::to_string(record.peer.transport)},
+                {"peer", record.peer.text()},
+                {"command", record.command.empty() ? json(nullptr) : json(record.command)},
+                {"subcommand", nullptr},
+                {"name", record.name.empty() ? json(nullptr) : json(record.name)},
+                {"end_code", record.code.empty() ? json(nullptr) : json(record.code)},
+                {"reaction", record.closed ? "closed" : record.code.empty() && record.response.empty() ? "none" : "answered"},
+                {"latency_us", std::chrono::duration<double, std::micro>(record.latency).count()},
+                {"bytes_in", record.request.size()},
+                {"bytes_out", record.response.size()},
+                {"request", scenarios::to_hex(record.request)},
+                {"response", scenarios::to_hex(record.response)},
+                {"note", note}};
 }
 
 }  // namespace slmp::control

@@ -16,4 +16,9 @@ nlohmann::json connection_json(const station::Connection& connection);
 //  "bytes_in", "bytes_out", "note"} — docs/api.md, "request" events.
 nlohmann::json request_json(const station::RequestRecord& record);
 
+// A front end's request in the same shape: "protocol" "hostlink"/"jw51cm",
+// "command" its text ("RD", "24"), "subcommand" null, "end_code" the response
+// code or RSLT, and the bytes as hex ("request", "response").
+nlohmann::json frontend_request_json(const station::FrontEndRecord& record);
+
 }  // namespace slmp::control

@@ -2,6 +2,7 @@
 // PUT /api/devices/{address}?as=...  with {"values": [...]} or {"string": "..."}
 // The views and their checks: device_view.hpp. docs/api.md, "Devices".
 #include "control/api.hpp"
+#include "control/device_names.hpp"
 #include "control/device_view.hpp"
 #include "control/event_hub.hpp"
 #include "control/value_body.hpp"
@@ -14,25 +15,26 @@ namespace {
 
 [[noreturn]] void bad(const std::string& message) { throw ApiError{Status::bad_request, message}; }
 
-View view_of(const ApiRequest& request, const devicemodel::DeviceSpec& spec) {
+View view_of(const ApiRequest& request, const NamedDevice& named) {
     const auto* as = request.param("as");
-    if (!as) return default_view(spec);
+    if (!as) return named.view.value_or(default_view(*named.start.spec));
     auto view = parse_view(*as);
     if (!view) bad("as=" + *as + " is not a view; use bits, words, dwords or string");
     return *view;
 }
 
 Reply get_devices(Api& api, const ApiRequest& request) {
-    auto start = parse_device(request.captures.at(0));
-    auto run = make_run(api.station.cpu(), start, view_of(request, *start.spec), count_param(request));
+    auto named = parse_station_device(api.station, request.captures.at(0));
+    auto run = make_run(api.station.cpu(), named.start, view_of(request, named), count_param(request));
     return json_reply(read_run(api.station.cpu().memory(), run));
 }
 
 Reply put_devices(Api& api, const ApiRequest& request) {
-    auto start = parse_device(request.captures.at(0));
+    auto named = parse_station_device(api.station, request.captures.at(0));
+    auto start = named.start;
     auto body = parse_value_body(request.body);
-    auto view = body.contains("string") ? View::String : view_of(request, *start.spec);
-    if (body.contains("string") && request.param("as") && view_of(request, *start.spec) != View::String)
+    auto view = body.contains("string") ? View::String : view_of(request, named);
+    if (body.contains("string") && request.param("as") && view_of(request, named) != View::String)
         bad("{\"string\": ...} writes as=string; drop as=" + *request.param("as") + " or send \"values\"");
 
     std::vector<std::uint32_t> values;

@@ -144,6 +144,11 @@ void EventHub::on_request(const station::RequestRecord& record) {
     flush_writes("slmp", &record.peer, record.connection);
 }
 
+void EventHub::on_frontend_request(const station::FrontEndRecord& record) {
+    if (wanted(kRequestEvents)) publish(kRequestEvents, "request", frontend_request_json(record));
+    flush_writes(record.protocol, &record.peer, record.connection);
+}
+
 void EventHub::on_pushed(const station::PushRecord& p) {
     if (!wanted(kRequestEvents)) return;
     publish(kRequestEvents, "ondemand",

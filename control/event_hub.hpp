@@ -68,6 +68,7 @@ public:
 
     void on_request_starting() override { flush_writes("internal"); }
     void on_request(const station::RequestRecord& record) override;
+    void on_frontend_request(const station::FrontEndRecord& record) override;   // a "request" event too
     void on_opened(const station::Connection& connection) override;
     void on_pushed(const station::PushRecord& push) override;   // an "ondemand" event (request events)
     void on_closed(const station::Connection& connection, std::string_view why) override;

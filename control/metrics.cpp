@@ -82,11 +82,23 @@ void Metrics::on_request(const station::RequestRecord& record) {
     }
 }
 
+void Metrics::on_frontend_request(const station::FrontEndRecord& record) {
+    auto transport = static_cast<std::uint8_t>(record.peer.transport == protocol::Transport::Udp);
+    auto command = record.command.empty() ? std::string("none") : record.known ? std::string(record.command) : std::string("other");
+    // A forced code is any byte; the front ends' own codes are two hex digits or IC.
+    auto code = record.closed ? std::string("closed") : record.code.empty() ? std::string("none") : std::string(record.code);
+    ++frontend_requests_[FrontEndKey{std::string(record.protocol), transport, std::move(command), std::move(code)}];
+}
+
 Metrics::Totals Metrics::totals() const {
     Totals totals;
     for (const auto& [key, count] : requests_) {
         totals.requests += count;
         if (std::get<3>(key) != 0) totals.errors += count;
+    }
+    for (const auto& [key, count] : frontend_requests_) {
+        totals.requests += count;
+        if (std::get<3>(key) != "00") totals.errors += count;
     }
     for (const auto& t : transports_) {
         totals.requests += t.unparsed;
@@ -113,6 +125,17 @@ std::string Metrics::render() const {
         out += "slmp_requests_total{transport=\"" + std::string(kTransportNames[transport]) + "\",command=\"" +
                hex4(command) + "\",subcommand=\"" + hex4(subcommand) + "\",end_code=\"" + code + "\"} " +
                std::to_string(count) + "\n";
+    }
+
+    header(out, "slmp_frontend_requests_total", "counter",
+           "Requests to the station's other protocols (protocol \"hostlink\", \"jw51cm\"), by transport, command "
+           "(\"other\": not in the front end's table; \"none\": no command could be read) and response code "
+           "(host-link code or JW RSLT; \"none\": not answered, \"closed\": a fault closed the connection).");
+    for (const auto& [key, count] : frontend_requests_) {
+        const auto& [protocol, transport, command, code] = key;
+        out += "slmp_frontend_requests_total{protocol=\"" + protocol + "\",transport=\"" +
+               std::string(kTransportNames[transport]) + "\",command=\"" + label(command) + "\",code=\"" + label(code) +
+               "\"} " + std::to_string(count) + "\n";
     }
 
     header(out, "slmp_unparsed_frames_total", "counter",

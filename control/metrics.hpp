@@ -26,6 +26,7 @@ public:
     Metrics& operator=(const Metrics&) = delete;
 
     void on_request(const station::RequestRecord& record) override;
+    void on_frontend_request(const station::FrontEndRecord& record) override;
     void on_opened(const station::Connection& connection) override;
     void on_closed(const station::Connection& connection, std::string_view why) override;
 
@@ -51,8 +52,14 @@ private:
         std::uint64_t unparsed = 0;
     };
 
+    // A front end's requests: protocol, transport, command, code. Bounded: the
+    // protocol is one of two, a command outside the front end's table is
+    // "other" (none read: "none"), a code is two hex digits, "IC", "none" or "closed".
+    using FrontEndKey = std::tuple<std::string, std::uint8_t, std::string, std::string>;
+
     station::Station& station_;
     std::map<RequestKey, std::uint64_t> requests_;
+    std::map<FrontEndKey, std::uint64_t> frontend_requests_;
     std::array<PerTransport, 2> transports_{};
     std::array<std::uint64_t, kBuckets.size() + 1> latency_buckets_{};   // not cumulative; last = +Inf
     double latency_sum_ = 0;

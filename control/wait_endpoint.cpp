@@ -1,6 +1,7 @@
 // GET /api/devices/{address}/wait?equals=5&timeout_ms=2000 (also not_equals,
 // greater, less, changes; as=bits|words|dwords). See control/wait_endpoint.hpp.
 #include "control/wait_endpoint.hpp"
+#include "control/device_names.hpp"
 
 #include <chrono>
 
@@ -107,8 +108,9 @@ asio::awaitable<Reply> wait_until(Api& api, WaitTarget target, Condition conditi
 }
 
 Reply device_wait(Api& api, const ApiRequest& request) {
-    auto start = parse_device(request.captures.at(0));
-    View view = default_view(*start.spec);
+    auto named = parse_station_device(api.station, request.captures.at(0));
+    auto start = named.start;
+    View view = named.view.value_or(default_view(*start.spec));
     if (const auto* as = request.param("as")) {
         auto parsed = parse_view(*as);
         if (!parsed || *parsed == View::String) bad("as=" + *as + " cannot be waited on; use bits, words or dwords");

@@ -44,6 +44,16 @@ std::vector<FaultStats> FaultSet::stats() const {
 bool FaultSet::matches(const Fault& fault, const Incoming& incoming) {
     const auto& r = incoming.request;
     const auto& m = fault.match;
+    if (m.request_protocol != incoming.request_protocol) return false;
+    if (incoming.frontend()) {
+        // The loader allows only these keys on a front end's fault.
+        const auto& names = m.frontend_commands;
+        if (!names.empty() && std::find(names.begin(), names.end(), incoming.command_text) == names.end()) return false;
+        if (m.transport && incoming.peer.transport != *m.transport) return false;
+        if (m.connection && incoming.connection != *m.connection) return false;
+        if (m.client && incoming.peer.address != *m.client) return false;
+        return true;
+    }
     auto listed = [](const std::vector<std::uint16_t>& list, std::uint16_t v) {
         return list.empty() || std::find(list.begin(), list.end(), v) != list.end();
     };
@@ -78,7 +88,11 @@ FaultDecision FaultSet::decide(const Incoming& incoming, double now_ms, const Ev
         };
         switch (a.kind) {
             case FaultKind::EndCode:
-                if (!d.end_code) d.end_code = a.end_code;
+                if (incoming.frontend()) {
+                    if (!d.frontend_code) d.frontend_code = a.frontend_code;
+                } else if (!d.end_code) {
+                    d.end_code = a.end_code;
+                }
                 break;
             case FaultKind::Delay:
                 if (d.delay_ms == 0) d.delay_ms = a.delay_min_ms == a.delay_max_ms ? a.delay_min_ms : e.rng.between(a.delay_min_ms, a.delay_max_ms);
@@ -102,8 +116,9 @@ FaultDecision FaultSet::decide(const Incoming& incoming, double now_ms, const Ev
         }
         if (log)
             log(EventLevel::Info, "fault '" + e.name + "' (" + std::string(to_string(a.kind)) + ") fired on " +
-                                      (request.has_command ? protocol::hex4(request.command) + "/" + protocol::hex4(request.subcommand)
-                                                           : std::string("a request")) +
+                                      (incoming.frontend() ? std::string(to_string(incoming.request_protocol)) + " " + incoming.command_text
+                                       : request.has_command ? protocol::hex4(request.command) + "/" + protocol::hex4(request.subcommand)
+                                                             : std::string("a request")) +
                                       incoming.from() + " (" + std::to_string(e.fired) +
                                       (e.fired == 1 ? " time)" : " times)"));
     }

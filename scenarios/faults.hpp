@@ -32,6 +32,7 @@ struct Delivery {
 struct FaultDecision {
     enum class Drop : std::uint8_t { None, NoResponse, Close, Reset };
     std::optional<protocol::EndCode> end_code;    // answer with this instead of the CPU
+    std::optional<std::uint8_t> frontend_code;    // a front end's: answer with this response code / RSLT
     Drop drop = Drop::None;
     double delay_ms = 0;
     std::optional<FaultAction> split, coalesce;

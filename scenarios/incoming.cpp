@@ -4,6 +4,15 @@
 #include "scenarios/device_values.hpp"
 
 namespace slmp::scenarios {
+
+std::string_view to_string(Protocol protocol) {
+    switch (protocol) {
+        case Protocol::Slmp: return "slmp";
+        case Protocol::HostLink: return "hostlink";
+        case Protocol::Jw51cm: return "jw51cm";
+    }
+    return "?";
+}
 namespace {
 
 // The devices an operand covers: its points in bits, or in words (a double

@@ -1,4 +1,5 @@
 // "faults": what to match, what to do, and how often.
+#include <cctype>
 #include <initializer_list>
 #include <string_view>
 
@@ -7,10 +8,48 @@
 namespace slmp::scenarios::load {
 namespace {
 
+// A host-link command is two letters, case counts ("Rr" is not "RR");
+// a JW-51CM COM is two hex digits, compared in uppercase.
+std::string frontend_command(const JsonAt& at, Protocol protocol) {
+    auto text = at.string();
+    bool ok = text.size() == 2;
+    for (auto& c : text) {
+        if (protocol == Protocol::Jw51cm) {
+            ok = ok && std::isxdigit(static_cast<unsigned char>(c));
+            c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        } else {
+            ok = ok && std::isgraph(static_cast<unsigned char>(c));
+        }
+    }
+    if (!ok)
+        at.fail("'" + at.string() + "' is not a " + std::string(to_string(protocol)) + " command",
+                protocol == Protocol::Jw51cm ? "write the COM as two hex digits, e.g. \"24\"" : "write the two-letter command, e.g. \"RD\"");
+    return text;
+}
+
 FaultMatch match(const JsonAt& at) {
-    at.only_keys({"command", "subcommand", "devices", "access", "frame", "code", "transport", "connection", "client"});
     FaultMatch m;
-    if (at.has("command")) m.commands = codes(at["command"]);
+    if (at.has("protocol")) {
+        auto p = at["protocol"].string();
+        if (p == "slmp") m.request_protocol = Protocol::Slmp;
+        else if (p == "hostlink") m.request_protocol = Protocol::HostLink;
+        else if (p == "jw51cm") m.request_protocol = Protocol::Jw51cm;
+        else at["protocol"].fail("unknown protocol '" + p + "'", "use \"slmp\", \"hostlink\" or \"jw51cm\"");
+    }
+    if (m.request_protocol != Protocol::Slmp) {
+        // A front end's request has a command and a peer; nothing SLMP decodes.
+        at.only_keys({"protocol", "command", "transport", "connection", "client"});
+        if (at.has("command")) {
+            auto c = at["command"];
+            if (c.json().is_array())
+                for (std::size_t i = 0; i < c.json().size(); ++i) m.frontend_commands.push_back(frontend_command(c[i], m.request_protocol));
+            else
+                m.frontend_commands.push_back(frontend_command(c, m.request_protocol));
+        }
+    } else {
+        at.only_keys({"protocol", "command", "subcommand", "devices", "access", "frame", "code", "transport", "connection", "client"});
+    }
+    if (at.has("command") && m.request_protocol == Protocol::Slmp) m.commands = codes(at["command"]);
     if (at.has("subcommand")) m.subcommands = codes(at["subcommand"]);
     if (at.has("devices")) m.devices = ranges(at["devices"]);
     if (at.has("access")) m.access = access(at["access"]);
@@ -84,11 +123,35 @@ void check_keys(const JsonAt& at, const KindInfo& k) {
     }
 }
 
-FaultAction action(const JsonAt& at, const KindInfo& k) {
+// The kinds a front end's request can have: an answer, a delay, a drop.
+bool frontend_kind(FaultKind kind) {
+    return kind == FaultKind::EndCode || kind == FaultKind::Delay || kind == FaultKind::NoResponse ||
+           kind == FaultKind::Close || kind == FaultKind::Reset;
+}
+
+// "end_code" on a front end: the host link's response code or the JW RSLT, two hex digits.
+std::uint8_t frontend_code(const JsonAt& at, Protocol protocol) {
+    auto text = at.string();
+    auto fix = protocol == Protocol::Jw51cm ? "write the RSLT as two hex digits, e.g. \"10\"" : "write the response code as two hex digits, e.g. \"15\"";
+    if (text.size() != 2 || !std::isxdigit(static_cast<unsigned char>(text[0])) || !std::isxdigit(static_cast<unsigned char>(text[1])))
+        at.fail("'" + text + "' is not a " + std::string(to_string(protocol)) + " response code", fix);
+    auto code = static_cast<std::uint8_t>(std::stoul(text, nullptr, 16));
+    if (code == 0) at.fail("00 is success", fix);
+    return code;
+}
+
+FaultAction action(const JsonAt& at, const KindInfo& k, Protocol request_protocol) {
     FaultAction a;
     a.kind = k.kind;
+    if (request_protocol != Protocol::Slmp && !frontend_kind(k.kind))
+        at["do"].fail("a \"" + std::string(k.name) + "\" fault does not act on " + std::string(to_string(request_protocol)) + " requests",
+                      "use end_code, delay, no_response, close or reset");
     switch (k.kind) {
         case FaultKind::EndCode:
+            if (request_protocol != Protocol::Slmp) {
+                a.frontend_code = frontend_code(at["end_code"], request_protocol);
+                break;
+            }
             a.end_code = protocol::end_code(at["end_code"].hex_code());
             if (a.end_code == protocol::EndCode::Ok) at["end_code"].fail("0000 is success", "use an error end code such as \"C051\"");
             break;
@@ -142,7 +205,7 @@ Fault fault(const JsonAt& at) {
     if (at.has("id")) f.id = at["id"].string();
     if (at.has("enabled")) f.enabled = at["enabled"].boolean();
     if (at.has("match")) f.match = match(at["match"]);
-    f.action = action(at, k);
+    f.action = action(at, k, f.match.request_protocol);
     if (at.has("skip")) f.skip = at["skip"].unsigned_int(1ull << 53);
     if (at.has("count")) {
         f.count = at["count"].unsigned_int(1ull << 53);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scenarios/scenario.hpp"
@@ -34,6 +35,13 @@ public:
                           const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults,
                           const std::string& named) = 0;
     virtual void closed(TimePoint at, const RecordedLink& link, const std::string& why) = 0;
+    // A front end's exchange (`protocol` "hostlink", "jw51cm"; `command` "RD",
+    // "24"; `code` the response code or RSLT, empty with no answer). The
+    // JSON-lines recording keeps it; the pcap capture does not.
+    virtual void frontend_exchange(TimePoint /*at*/, const RecordedLink& /*link*/, std::string_view /*protocol*/,
+                                   std::string_view /*command*/, std::string_view /*code*/,
+                                   std::span<const std::uint8_t> /*request*/, std::span<const std::uint8_t> /*response*/,
+                                   bool /*answered*/, const std::vector<std::string>& /*faults*/) {}
     // An Ondemand push the station sent unasked (docs/timing.md): by default a
     // response without a request, marked "ondemand".
     virtual void pushed(TimePoint at, const RecordedLink& link, const std::vector<std::uint8_t>& frame) {

@@ -98,6 +98,21 @@ void RecordingWriter::pushed(TimePoint at, const RecordedLink& link, const std::
     line(e.dump());
 }
 
+// An "exchange" line with "protocol": replay and slmp-replay read SLMP lines only.
+void RecordingWriter::frontend_exchange(TimePoint at, const RecordedLink& link, std::string_view protocol,
+                                        std::string_view command, std::string_view code,
+                                        std::span<const std::uint8_t> request, std::span<const std::uint8_t> response,
+                                        bool answered, const std::vector<std::string>& faults) {
+    auto e = event(ms(at), link, "exchange");
+    e["protocol"] = protocol;
+    e["command"] = command.empty() ? json(nullptr) : json(command);
+    e["code"] = code.empty() ? json(nullptr) : json(code);
+    e["request"] = to_hex(request);
+    e["response"] = answered ? json(to_hex(response)) : json(nullptr);
+    if (!faults.empty()) e["faults"] = faults;
+    line(e.dump());
+}
+
 void RecordingWriter::closed(TimePoint at, const RecordedLink& link, const std::string& why) {
     auto e = event(ms(at), link, "close");
     e["why"] = why;
@@ -124,6 +139,7 @@ Recording read_recording(const std::filesystem::path& file) {
             continue;
         }
         if (j.value("event", "") != "exchange") continue;
+        if (j.value("protocol", "slmp") != "slmp") continue;   // a front end's exchange: not replayed
         RecordedExchange e;
         e.t_ms = j.value("t_ms", 0.0);
         e.connection = j.value("conn", std::uint64_t{0});

@@ -56,6 +56,10 @@ public:
                   const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults,
                   const std::string& named) override;
     void closed(TimePoint at, const RecordedLink& link, const std::string& why) override;
+    void frontend_exchange(TimePoint at, const RecordedLink& link, std::string_view protocol, std::string_view command,
+                           std::string_view code, std::span<const std::uint8_t> request,
+                           std::span<const std::uint8_t> response, bool answered,
+                           const std::vector<std::string>& faults) override;
 
 private:
     void line(const std::string& text);

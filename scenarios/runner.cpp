@@ -107,7 +107,7 @@ Plan ScenarioRunner::before(const Incoming& incoming, std::span<const std::uint8
     Plan plan;
     plan.incoming = &incoming;
     const auto& r = incoming.request;
-    if (!r.complete()) return plan;
+    if (!incoming.frontend() && !r.complete()) return plan;
     if (!powered_) {   // UDP while the power is off (TCP ports are closed)
         plan.silent = true;
         return plan;
@@ -127,6 +127,10 @@ Plan ScenarioRunner::before(const Incoming& incoming, std::span<const std::uint8
         case FaultDecision::Drop::Reset: plan.silent = plan.reset = true; break;
     }
     if (plan.silent) return plan;
+    if (incoming.frontend()) {   // no replay for front ends; the delay is the caller's (decision.delay_ms)
+        plan.frontend_code = d.frontend_code;
+        return plan;
+    }
     if (d.end_code) {
         plan.answer = protocol::encode_error_response(r.header, r.command, r.subcommand, *d.end_code);
         return plan;

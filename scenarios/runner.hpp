@@ -49,10 +49,11 @@ struct Plan {
     FaultDecision decision;
     // Answer without the CPU: a forced end code or a recorded response.
     std::optional<std::vector<std::uint8_t>> answer;
+    std::optional<std::uint8_t> frontend_code;   // a front end answers this code, executing nothing
     bool silent = false;                 // consume the request, send nothing
     bool close = false, reset = false;   // then close the connection (FIN / RST)
     Delivery delivery;
-    bool pass() const { return !answer && !silent; }   // the engine handles it
+    bool pass() const { return !answer && !silent && !frontend_code; }   // the engine handles it
 };
 
 class ScenarioRunner {

@@ -91,6 +91,12 @@ Plan RunnerSet::before(const Incoming& incoming, std::span<const std::uint8_t> i
     return merged;
 }
 
+Plan RunnerSet::before_frontend(const Incoming& incoming) {
+    auto plan = before(incoming, {});
+    consulted_.clear();
+    return plan;
+}
+
 void RunnerSet::after(Plan& plan, const protocol::Outcome& outcome, std::vector<std::uint8_t>& response) {
     for (std::size_t i = 0; i < consulted_.size() && i < runners_.size(); ++i) {
         runners_[i]->after(consulted_[i], outcome, response);

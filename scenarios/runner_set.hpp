@@ -41,6 +41,9 @@ public:
     void scan(TimePoint now);
     Plan before(const Incoming& incoming, std::span<const std::uint8_t> input);
     void after(Plan& plan, const protocol::Outcome& outcome, std::vector<std::uint8_t>& response);
+    // A front end's request (incoming.frontend()): only the faults decide; no
+    // replay, no traffic triggers, no after(). The delay is plan.decision.delay_ms.
+    Plan before_frontend(const Incoming& incoming);
 
     // What runs, in load order, with the time since each runner's first scan.
     struct Running {

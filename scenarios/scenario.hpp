@@ -101,6 +101,11 @@ struct Timeline {
 
 using config::Transport;
 enum class Access : std::uint8_t { Any, Read, Write };
+// Which protocol a request came in: SLMP (the engine) or a front end on the
+// same memory (frontends/hostlink, frontends/jw51cm).
+enum class Protocol : std::uint8_t { Slmp, HostLink, Jw51cm };
+std::string_view to_string(Protocol protocol);   // "slmp", "hostlink", "jw51cm"
+
 
 struct FaultMatch {
     std::vector<std::uint16_t> commands;          // empty: any
@@ -112,6 +117,10 @@ struct FaultMatch {
     std::optional<Transport> transport;
     std::optional<std::uint64_t> connection;      // the n-th connection since start (1 = first)
     std::optional<std::string> client;            // the client's IP address
+    // A fault matches one protocol's requests (SLMP unless "protocol" says
+    // otherwise); a front end's commands by their text ("RD", "24").
+    Protocol request_protocol = Protocol::Slmp;
+    std::vector<std::string> frontend_commands;   // empty: any
 };
 
 enum class FaultKind : std::uint8_t {
@@ -122,6 +131,7 @@ enum class Corruption : std::uint8_t { Length, Subheader, Random };
 struct FaultAction {
     FaultKind kind = FaultKind::NoResponse;
     protocol::EndCode end_code = protocol::EndCode::Ok;
+    std::uint8_t frontend_code = 0;               // EndCode on a front end: host-link response code, JW RSLT
     double delay_min_ms = 0, delay_max_ms = 0;    // Delay: fixed when equal
     std::size_t chunks = 2;                       // Split: number of pieces...
     std::size_t chunk_bytes = 0;                  // ...or their size (wins when set)

@@ -71,15 +71,37 @@ awaitable<void> FrontEndSession::serve() {
         }
         last_activity_ = std::chrono::steady_clock::now();
         pending.insert(pending.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
-        // Every whole record now buffered, answered in order, in one write.
+        // Every whole record now buffered, answered in order, in one write
+        // (unless a scenario fault delays one or closes the connection).
         std::string out;
         std::size_t offset = 0;
+        bool closing = false, resetting = false;
         while (offset < pending.size()) {
-            auto step = handler_(std::span<const std::uint8_t>(pending).subspan(offset));
+            auto step = handler_(std::span<const std::uint8_t>(pending).subspan(offset), id_, peer_);
             if (step.need_more) break;
             offset += step.consumed;
+            if (step.close || step.reset) {
+                closing = true;
+                resetting = step.reset;
+                if (step.reset) socket_.set_option(asio::socket_base::linger(true, 0), ec);
+                close_reason_ = std::string("scenario fault: connection ") + (step.reset ? "reset (RST)" : "closed (FIN)");
+                break;
+            }
+            if (step.delay.count() > 0) {
+                if (!co_await send(out)) {
+                    closing = true;
+                    break;
+                }
+                asio::steady_timer wait(socket_.get_executor(), step.delay);
+                co_await wait.async_wait(asio::redirect_error(use_awaitable, ec));
+            }
             out += step.response;
             if (step.consumed == 0) break;   // a handler that takes nothing would loop forever
+        }
+        if (closing) {
+            co_await send(out);
+            if (resetting) socket_.close(ec);   // with linger 0 and no shutdown (FIN) first: an RST
+            break;
         }
         pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(offset));
         if (pending.empty()) {
@@ -89,15 +111,21 @@ awaitable<void> FrontEndSession::serve() {
             partial_since_ = std::chrono::steady_clock::now();
             if (partial_timeout_.count() > 0) deadline_timer_.cancel();
         }
-        if (!out.empty()) {
-            co_await asio::async_write(socket_, asio::buffer(out), asio::redirect_error(use_awaitable, ec));
-            if (ec) {
-                close_reason_ = "write failed: " + ec.message();
-                break;
-            }
-        }
+        if (!co_await send(out)) break;
     }
     finish();
+}
+
+awaitable<bool> FrontEndSession::send(std::string& out) {
+    if (out.empty() || closed_) co_return !closed_;
+    boost::system::error_code ec;
+    co_await asio::async_write(socket_, asio::buffer(out), asio::redirect_error(use_awaitable, ec));
+    out.clear();
+    if (ec) {
+        close_reason_ = "write failed: " + ec.message();
+        co_return false;
+    }
+    co_return true;
 }
 
 awaitable<void> FrontEndSession::watch_deadlines() {

@@ -23,9 +23,15 @@ struct FrontEndStep {
     bool need_more = false;      // a request has begun but is not whole
     std::size_t consumed = 0;    // bytes taken (a request, or garbage dropped)
     std::string response;        // bytes to send back (empty: none)
+    // A scenario fault's (station/frontend_call.hpp): the answers before this one
+    // are sent, then this one waits `delay`; or the connection closes instead.
+    std::chrono::microseconds delay{0};
+    bool close = false, reset = false;
 };
-// Called with the bytes buffered so far; owns the connection's protocol state.
-using FrontEndHandler = std::function<FrontEndStep(std::span<const std::uint8_t> pending)>;
+// Called with the bytes buffered so far, the connection's id and peer; owns
+// the connection's protocol state.
+using FrontEndHandler = std::function<FrontEndStep(std::span<const std::uint8_t> pending, std::uint64_t connection,
+                                                   const protocol::Peer& peer)>;
 
 class FrontEndSession final : public StreamSession, public std::enable_shared_from_this<FrontEndSession> {
 public:
@@ -40,6 +46,7 @@ public:
 private:
     boost::asio::awaitable<void> serve();
     boost::asio::awaitable<void> watch_deadlines();
+    boost::asio::awaitable<bool> send(std::string& out);   // false: the write failed
     void finish();
 
     boost::asio::ip::tcp::socket socket_;

@@ -28,11 +28,16 @@ asio::awaitable<void> FrontEndUdpListener::serve() {
             if (ec == asio::error::operation_aborted || !socket_.is_open()) co_return;
             continue;
         }
-        auto answer = handler_(std::span<const std::uint8_t>(datagram.data(), n));
+        protocol::Peer peer{protocol::Transport::Udp, sender.address().to_string(), sender.port(), port_};
+        auto [answer, delay] = handler_(std::span<const std::uint8_t>(datagram.data(), n), peer);
         if (answer.empty()) {
             spdlog::debug("{} UDP {}:{}: datagram of {} byte(s) not answered", protocol_, sender.address().to_string(),
                           sender.port(), n);
             continue;
+        }
+        if (delay.count() > 0) {
+            asio::steady_timer wait(socket_.get_executor(), delay);
+            co_await wait.async_wait(asio::redirect_error(asio::use_awaitable, ec));
         }
         co_await socket_.async_send_to(asio::buffer(answer), sender, asio::redirect_error(asio::use_awaitable, ec));
         if (ec) spdlog::debug("{} UDP send failed: {}", protocol_, ec.message());

@@ -2,6 +2,7 @@
 // datagram, the answer sent back to the datagram's source (inferred for JW).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -9,10 +10,17 @@
 
 #include "station/asio.hpp"
 
+#include "protocol/peer.hpp"
+
 namespace slmp::server {
 
-// The answer to one datagram; empty: none.
-using DatagramHandler = std::function<std::string(std::span<const std::uint8_t> datagram)>;
+// The answer to one datagram (empty: none), and how long a scenario fault
+// holds it back (the port's next datagram waits behind it, as on a busy unit).
+struct DatagramAnswer {
+    std::string bytes;
+    std::chrono::microseconds delay{0};
+};
+using DatagramHandler = std::function<DatagramAnswer(std::span<const std::uint8_t> datagram, const protocol::Peer& peer)>;
 
 class FrontEndUdpListener {
 public:

@@ -1,6 +1,9 @@
 #include "server/listeners.hpp"
 
+#include "frontends/hostlink/command_table.hpp"
+#include "frontends/jw51cm/command_table.hpp"
 #include "server/frontend_session.hpp"
+#include "station/frontend_call.hpp"
 
 namespace slmp::server {
 
@@ -22,11 +25,55 @@ Listeners::Listeners(boost::asio::io_context& io, station::Station& station, con
     }
     if (frontends.hostlink.enabled) listen_hostlink(io, station, config, frontends.hostlink, bind);
     if (frontends.jw51cm.enabled) listen_jw51cm(io, station, config, frontends.jw51cm, bind);
+    if (hostlink_ || jw51cm_) {
+        station_ = &station;
+        station.attach_frontends({hostlink_.get(), jw51cm_.get()});
+    }
 }
 
 namespace {
 
 std::string as_text(std::span<const std::uint8_t> bytes) { return std::string(bytes.begin(), bytes.end()); }
+
+std::span<const std::uint8_t> as_bytes(const std::string& text) {
+    return {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()};
+}
+
+std::string hex2(std::uint8_t byte) {
+    static constexpr char kDigits[] = "0123456789ABCDEF";
+    return {kDigits[byte >> 4], kDigits[byte & 0xF]};
+}
+
+FrontEndStep step(std::size_t consumed, std::string response, const station::FrontEndCall::Delivery& delivery) {
+    FrontEndStep s{false, consumed, std::move(response)};
+    s.delay = delivery.delay;
+    s.close = delivery.close;
+    s.reset = delivery.reset;
+    return s;
+}
+
+// One host-link record cut from `pending`, answered and reported (station/frontend_call.hpp).
+FrontEndStep hostlink_step(station::Station& station, hostlink::HostLink& link, hostlink::LinkState& state,
+                           std::span<const std::uint8_t> pending, std::uint64_t connection, const protocol::Peer& peer) {
+    station::FrontEndCall call(station, scenarios::Protocol::HostLink, connection, peer);
+    auto result = link.handle(pending, state, call.gate());
+    if (result.kind == hostlink::Cut::Kind::NeedMore) return FrontEndStep{true};
+    const auto* row = result.command.empty() ? nullptr : hostlink::find_command(result.command);
+    auto delivery = call.finish(pending.first(result.consumed), result.command, row != nullptr,
+                                row ? row->function : std::string_view(), result.code, as_bytes(result.response));
+    return step(result.consumed, std::move(result.response), delivery);
+}
+
+// A JW-51CM result reported: the COM (when the request reached it) and the RSLT answered.
+station::FrontEndCall::Delivery jw51cm_report(station::FrontEndCall& call, std::span<const std::uint8_t> request,
+                                              const jw51cm::ComputerLink::Result& result) {
+    constexpr std::size_t kCom = jw51cm::kHeaderBytes + 2;
+    const bool has_com = request.size() > kCom;
+    const auto* row = has_com ? jw51cm::find_command(result.command) : nullptr;
+    auto code = result.response.size() > kCom + 1 ? hex2(result.response[kCom + 1]) : std::string();
+    return call.finish(request, has_com ? hex2(result.command) : std::string(), row != nullptr,
+                       row ? row->name : std::string_view(), code, result.response);
+}
 
 }  // namespace
 
@@ -37,15 +84,16 @@ void Listeners::listen_hostlink(boost::asio::io_context& io, station::Station& s
         throw config::ConfigError(problem);
     hostlink_ = std::make_unique<hostlink::HostLink>(station.cpu(), *hostlink.options);
     auto* link = hostlink_.get();
+
     auto port = hostlink.port;
     SessionFactory factory = [&station, link, port](boost::asio::ip::tcp::socket socket,
                                                     std::function<void(StreamSession*)> on_closed,
                                                     std::function<std::size_t()>) -> std::shared_ptr<StreamSession> {
         // The connection's own state (its QQMR list) lives in its handler.
         auto state = std::make_shared<hostlink::LinkState>();
-        FrontEndHandler handler = [link, state](std::span<const std::uint8_t> pending) {
-            auto result = link->handle(pending, *state);
-            return FrontEndStep{result.kind == hostlink::Cut::Kind::NeedMore, result.consumed, result.response};
+        FrontEndHandler handler = [&station, link, state](std::span<const std::uint8_t> pending, std::uint64_t connection,
+                                                          const protocol::Peer& peer) {
+            return hostlink_step(station, *link, *state, pending, connection, peer);
         };
         return std::make_shared<FrontEndSession>(std::move(socket), station, "host link", std::move(handler), port,
                                                  std::move(on_closed));
@@ -76,10 +124,13 @@ void Listeners::listen_jw51cm(boost::asio::io_context& io, station::Station& sta
         SessionFactory factory = [&station, link, port](boost::asio::ip::tcp::socket socket,
                                                         std::function<void(StreamSession*)> on_closed,
                                                         std::function<std::size_t()>) -> std::shared_ptr<StreamSession> {
-            FrontEndHandler handler = [link](std::span<const std::uint8_t> pending) {
-                auto result = link->handle_stream(pending);
-                return FrontEndStep{result.kind == jw51cm::ComputerLink::Result::Kind::NeedMore, result.consumed,
-                                    as_text(result.response)};
+            FrontEndHandler handler = [&station, link](std::span<const std::uint8_t> pending, std::uint64_t connection,
+                                                       const protocol::Peer& peer) {
+                station::FrontEndCall call(station, scenarios::Protocol::Jw51cm, connection, peer);
+                auto result = link->handle_stream(pending, call.gate());
+                if (result.kind == jw51cm::ComputerLink::Result::Kind::NeedMore) return FrontEndStep{true};
+                auto delivery = jw51cm_report(call, pending.first(result.consumed), result);
+                return step(result.consumed, as_text(result.response), delivery);
             };
             return std::make_shared<FrontEndSession>(std::move(socket), station, "JW-51CM", std::move(handler), port,
                                                      std::move(on_closed));
@@ -91,11 +142,16 @@ void Listeners::listen_jw51cm(boost::asio::io_context& io, station::Station& sta
         }
     }
     if (jw.udp) {
+        // One session for the port, as an SLMP UDP port has: requests report it as their connection.
+        auto session = station.next_session_id();
+        DatagramHandler handler = [&station, link, session](std::span<const std::uint8_t> datagram, const protocol::Peer& peer) {
+            station::FrontEndCall call(station, scenarios::Protocol::Jw51cm, session, peer);
+            auto result = link->handle_datagram(datagram, call.gate());
+            auto delivery = jw51cm_report(call, datagram, result);
+            return DatagramAnswer{as_text(result.response), delivery.delay};
+        };
         try {
-            jw51cm_udp_ = std::make_unique<FrontEndUdpListener>(io, "JW-51CM", jw.udp->port, bind,
-                                                                [link](std::span<const std::uint8_t> datagram) {
-                                                                    return as_text(link->handle_datagram(datagram).response);
-                                                                });
+            jw51cm_udp_ = std::make_unique<FrontEndUdpListener>(io, "JW-51CM", jw.udp->port, bind, std::move(handler));
         } catch (const boost::system::system_error& e) {
             throw fail("UDP", jw.udp->port, e);
         }
@@ -127,6 +183,11 @@ std::vector<std::uint16_t> Listeners::udp_ports() const {
     std::vector<std::uint16_t> ports;
     for (const auto& l : udp_) ports.push_back(l->port());
     return ports;
+}
+
+Listeners::~Listeners() {
+    // The front ends go with the listeners: the station must not reach them after.
+    if (station_) station_->frontends() = {};
 }
 
 void Listeners::stop() {

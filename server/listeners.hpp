@@ -31,6 +31,9 @@ public:
     // the port and the fix when one cannot be had.
     Listeners(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
               const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind);
+    ~Listeners();
+    Listeners(const Listeners&) = delete;
+    Listeners& operator=(const Listeners&) = delete;
 
     std::vector<std::uint16_t> tcp_ports() const;   // bound ports, also when 0 was asked for
     std::vector<std::uint16_t> udp_ports() const;
@@ -50,6 +53,7 @@ private:
     void listen_jw51cm(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
                        const config::Jw51cmConfig& jw, const boost::asio::ip::address& bind);
 
+    station::Station* station_ = nullptr;   // whose frontends() name ours (cleared on destruction)
     std::vector<std::unique_ptr<TcpListener>> tcp_;
     std::vector<std::unique_ptr<UdpListener>> udp_;
     std::unique_ptr<hostlink::HostLink> hostlink_;

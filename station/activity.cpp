@@ -8,6 +8,11 @@ void Activity::request(const RequestRecord& record) {
     for (auto* observer : observers_) observer->on_request(record);
 }
 
+void Activity::frontend_request(const FrontEndRecord& record) {
+    if (auto it = connections_.find(record.connection); it != connections_.end()) ++it->second.requests;
+    for (auto* observer : observers_) observer->on_frontend_request(record);
+}
+
 void Activity::opened(Connection connection) {
     auto id = connection.id;
     auto& stored = connections_[id] = std::move(connection);

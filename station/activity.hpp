@@ -43,6 +43,23 @@ struct PushRecord {
     std::string_view why;                      // "POST /api/ondemand", "timeline /timeline/steps/0", ...
 };
 
+// One request a front end (the host link, the JW-51CM computer link) handled,
+// reported like an SLMP one (docs/hostlink.md, docs/jw51cm.md). Valid only during the call.
+struct FrontEndRecord {
+    std::string_view protocol;                 // "hostlink", "jw51cm"
+    std::uint64_t connection = 0;              // TCP connection id, or the UDP port's session id
+    const slmp::protocol::Peer& peer;          // (qualified: `protocol` is a member here)
+    std::string_view command;                  // "RD", "24" (JW COM in hex); empty: none could be read
+    bool known = false;                        // the command is in the front end's table (metrics name others "other")
+    std::string_view name;                     // the command table's name for it; empty when unknown
+    std::string_view code;                     // response code / RSLT answered ("00", "IC", "10"); empty: no answer
+    bool closed = false;                       // a fault closed the connection instead
+    std::span<const std::uint8_t> request;     // the bytes the request took (garbage dropped included)
+    std::span<const std::uint8_t> response;    // the bytes sent back (empty: none)
+    std::chrono::nanoseconds latency{};        // time spent in the front end
+    const std::vector<std::string>& faults;    // the scenario faults that fired on it
+};
+
 struct Connection {
     std::uint64_t id = 0;
     protocol::Peer peer;                       // the client, its transport and the simulator's port it reached
@@ -58,6 +75,7 @@ public:
     virtual void on_opened(const Connection&) {}
     virtual void on_closed(const Connection&, std::string_view /*why*/) {}
     virtual void on_pushed(const PushRecord&) {}
+    virtual void on_frontend_request(const FrontEndRecord&) {}
 
 protected:
     ~ActivityObserver() = default;
@@ -74,6 +92,7 @@ public:
         for (auto* observer : observers_) observer->on_request_starting();
     }
     void request(const RequestRecord& record);
+    void frontend_request(const FrontEndRecord& record);
     void opened(Connection connection);
     void closed(std::uint64_t id, std::string_view why);
     void pushed(const PushRecord& record) {

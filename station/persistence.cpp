@@ -13,6 +13,7 @@ namespace asio = boost::asio;
 Persistence::Persistence(asio::io_context& io, devicemodel::Cpu& cpu, const config::PersistenceConfig& config)
     : cpu_(cpu),
       store_(config.state_dir),
+      units_store_(config.state_dir, "units.bin"),
       interval_(static_cast<std::int64_t>(config.snapshot_interval_s * 1000)),
       restore_all_(config.restore_all),
       timer_(io) {}
@@ -37,6 +38,8 @@ bool Persistence::save(std::string_view why) {
     try {
         auto started = std::chrono::steady_clock::now();
         store_.save(devicemodel::encode_snapshot(cpu_.memory(), cpu_.profile().name));
+        if (units)
+            if (auto bytes = units()) units_store_.save(*bytes);
         spdlog::debug("state directory: snapshot saved ({}) in {} ms", why,
                       std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - started).count());
         return true;

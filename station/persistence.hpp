@@ -5,6 +5,9 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
+#include <optional>
+#include <vector>
 #include <string_view>
 
 #include "station/asio.hpp"
@@ -28,11 +31,19 @@ public:
     void start();   // the interval timer, when an interval is configured
     void stop();
 
+    // The front ends' unit state (station/frontend_state.hpp) beside the
+    // device memory, in units.bin: what save() writes (nullopt: nothing to
+    // save, the file stays), and what was saved last (nullopt: none).
+    std::function<std::optional<std::vector<std::uint8_t>>()> units;
+    std::optional<std::vector<std::uint8_t>> load_units() const { return units_store_.load(); }
+    const std::filesystem::path& units_file() const { return units_store_.file(); }
+
 private:
     boost::asio::awaitable<void> every_interval();
 
     devicemodel::Cpu& cpu_;
     StateStore store_;
+    StateStore units_store_;
     std::chrono::milliseconds interval_;
     bool restore_all_;
     boost::asio::steady_timer timer_;

@@ -143,6 +143,22 @@ void ScenarioHook::after(scenarios::Plan& plan, Handled& handled, std::span<cons
                     outcome.named);
 }
 
+scenarios::Plan ScenarioHook::frontend_before(scenarios::Incoming& incoming, std::uint64_t session) {
+    if (runners_.empty()) return {};
+    if (auto it = ordinals_.find(session); incoming.peer.transport == Transport::Tcp && it != ordinals_.end())
+        incoming.connection = it->second;
+    return runners_.before_frontend(incoming);
+}
+
+void ScenarioHook::frontend_recorded(const FrontEndRecord& f) {
+    if (recorders_.empty()) return;
+    const scenarios::RecordedLink at{f.connection, f.peer.transport, f.peer.endpoint(), f.peer.local_port};
+    const bool answered = !f.code.empty() || !f.response.empty();
+    for (auto& r : recorders_)
+        r->frontend_exchange(std::chrono::steady_clock::now(), at, f.protocol, f.command, f.code, f.request, f.response,
+                             answered, f.faults);
+}
+
 void ScenarioHook::scanned(std::chrono::steady_clock::time_point now) {
     runners_.scan(now);
 }

@@ -78,6 +78,11 @@ public:
     // After the engine or the answer: triggers, corruption, the delivery, recording.
     void after(scenarios::Plan& plan, Handled& handled, std::span<const std::uint8_t> input,
                const protocol::Session& session, const protocol::Peer& peer);
+    // A front end's request (incoming.frontend()), once its command is known:
+    // what the faults want done (station/frontend_call.cpp). `session` is its TCP connection id.
+    scenarios::Plan frontend_before(scenarios::Incoming& incoming, std::uint64_t session);
+    // A front end's exchange, to the JSON-lines recording.
+    void frontend_recorded(const FrontEndRecord& record);
     // After every CPU scan (station/scan_loop.cpp).
     void scanned(std::chrono::steady_clock::time_point now);
 

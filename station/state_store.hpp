@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace slmp::station {
@@ -14,7 +15,8 @@ namespace slmp::station {
 class StateStore {
 public:
     // Creates the directory when missing; throws config::ConfigError when it cannot.
-    explicit StateStore(std::filesystem::path dir);
+    // `name`: the file in it (the device memory's snapshot.bin, the front ends' units.bin).
+    explicit StateStore(std::filesystem::path dir, const std::string& name = "snapshot.bin");
 
     const std::filesystem::path& file() const { return file_; }
     // The saved snapshot, or nullopt when there is none yet.

@@ -23,6 +23,9 @@
 #include "station/scenario_hook.hpp"
 #include "station/transports.hpp"
 
+namespace slmp::hostlink { class HostLink; }
+namespace slmp::jw51cm { class ComputerLink; }
+
 namespace slmp::station {
 
 class Persistence;
@@ -137,6 +140,20 @@ public:
 
     devicemodel::Cpu& cpu() { return cpu_; }
     const devicemodel::Cpu& cpu() const { return cpu_; }
+    // The front ends serving this station's memory (frontends/), registered by
+    // the transports that own them (server/listeners.cpp) and cleared when
+    // those stop; null: none. The HTTP API resolves their address names
+    // through them; snapshots and the state directory keep their unit state.
+    struct FrontEnds {
+        hostlink::HostLink* hostlink = nullptr;
+        jw51cm::ComputerLink* jw51cm = nullptr;
+    };
+    FrontEnds& frontends() { return frontends_; }
+    // Registers them (before connect(), so the initial snapshot holds their
+    // state) and, with a state directory, restores what it saved of them.
+    // Throws config::ConfigError when that does not fit this configuration.
+    void attach_frontends(FrontEnds frontends);
+    const FrontEnds& frontends() const { return frontends_; }
     protocol::Engine& engine() { return engine_; }
     Activity& activity() { return activity_; }   // requests and connections, for metrics and the HTTP API
     // Scenarios and recording: the one hook around the engine (station/scenario_hook.hpp).
@@ -158,6 +175,7 @@ private:
     std::vector<std::unique_ptr<devicemodel::Cpu>> other_cpus_;   // CPU No.2–4 of a multi-CPU system
     std::uint64_t next_session_id_ = 1;
     Activity activity_;
+    FrontEnds frontends_;
     ScenarioHook scenario_;
     std::unique_ptr<ScanLoop> scan_;                     // null in a bare station
     std::unique_ptr<Persistence> persistence_;           // null without a state directory

@@ -2,6 +2,7 @@
 // (station/station_snapshot.hpp). Everything runs on the io_context thread
 // between two requests, so a restore is atomic for every client.
 #include "station/station_snapshot.hpp"
+#include "station/frontend_state.hpp"
 
 #include <cstring>
 #include <fstream>
@@ -11,6 +12,7 @@
 
 #include "config/config.hpp"
 #include "devicemodel/snapshot.hpp"
+#include "station/persistence.hpp"
 #include "station/scan_loop.hpp"
 #include "station/station.hpp"
 
@@ -100,6 +102,7 @@ std::vector<std::uint8_t> encode_station_file(const StationSnapshot& snapshot) {
         switch_byte.push_back(snapshot.cpus[0].run_switch == devicemodel::RunSwitch::Run ? 1 : 0);
     std::vector<std::uint8_t> out(std::begin(kFileMagic), std::end(kFileMagic));
     put_u32(out, static_cast<std::uint32_t>(blobs.size() + 1));
+    for (const auto& [name, bytes] : snapshot.units) blobs.emplace_back("unit " + name, &bytes);
     for (const auto& [name, bytes] : blobs) put_blob(out, name, *bytes);
     put_blob(out, "switch", switch_byte);
     return out;
@@ -137,6 +140,10 @@ StationSnapshot decode_station_file(std::span<const std::uint8_t> bytes, const s
         std::vector<std::uint8_t> blob(bytes.begin() + static_cast<std::ptrdiff_t>(pos),
                                        bytes.begin() + static_cast<std::ptrdiff_t>(pos + size));
         pos += size;
+        if (name.rfind("unit ", 0) == 0) {
+            snapshot.units[name.substr(5)] = std::move(blob);
+            continue;
+        }
         // "cpuN" opens CPU N; the names after it without a "cpuN " prefix are CPU No.1's.
         std::size_t cpu = 0;
         std::string rest = name;
@@ -175,6 +182,7 @@ StationSnapshot Station::snapshot() {
     StationSnapshot s;
     for (auto* cpu : all_cpus()) s.cpus.push_back(take(*cpu));
     s.scenarios = scenario_.scenario_groups();
+    s.units = take_units(frontends_);
     if (scan_) {
         s.clock = scan_->clock().now();
         s.has_clock = true;
@@ -188,6 +196,8 @@ void Station::restore(const StationSnapshot& s, bool drop_connections) {
     if (s.cpus.size() > cpus.size())
         throw config::ConfigError("the snapshot holds " + std::to_string(s.cpus.size()) + " CPUs and this station " +
                                   std::to_string(cpus.size()) + "; restore it with the configuration it was taken with");
+    // The front ends' state first: it is checked whole before anything changes.
+    give_units(s.units, frontends_);
     // The scenarios first: stopping one ends its power cut, which restarts sessions.
     if (s.has_scenarios) scenario_.replace_scenarios(s.scenarios);
     for (std::size_t i = 0; i < s.cpus.size(); ++i) give_back(s.cpus[i], *cpus[i], "CPU No." + std::to_string(i + 1));
@@ -198,6 +208,21 @@ void Station::restore(const StationSnapshot& s, bool drop_connections) {
         for (auto id : ids) activity_.close(id, "snapshot restored with drop_connections");
         if (transports_) transports_->restart_sessions();
     }
+}
+
+void Station::attach_frontends(FrontEnds frontends) {
+    frontends_ = frontends;
+    if (!persistence_) return;
+    if (auto bytes = persistence_->load_units()) {
+        const auto source = persistence_->units_file().string();
+        give_units(decode_units(*bytes, source), frontends_);
+        spdlog::info("state directory: restored the front ends' unit state from {}", source);
+    }
+    persistence_->units = [this]() -> std::optional<std::vector<std::uint8_t>> {
+        auto parts = take_units(frontends_);
+        if (parts.empty()) return std::nullopt;   // the front ends are gone (shutdown): keep the file
+        return encode_units(parts);
+    };
 }
 
 void Station::reset(bool drop_connections) {

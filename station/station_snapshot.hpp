@@ -42,6 +42,9 @@ struct StationSnapshot {
     std::chrono::steady_clock::time_point clock{};                    // CPU time when taken
     bool has_clock = false;                                           // false in a bare station
     std::chrono::system_clock::time_point taken{};
+    // The front ends' unit state by part (station/frontend_state.hpp); a part
+    // missing here leaves that front end as it is.
+    std::map<std::string, std::vector<std::uint8_t>> units;
 
     std::size_t memory_bytes() const;
 };
@@ -50,7 +53,8 @@ struct StationSnapshot {
 // every store and the RUN/STOP switch; the rest of the runtime, the scenarios
 // and the clock are not in it. Layout: "SLMPSTN1" | u32 blobs | per blob
 // u8 n + name ("cpu1", "module 3", "network 1", "station buffer", "switch") |
-// u32 n + bytes; each memory blob is a devicemodel snapshot with its checksum.
+// u32 n + bytes; each memory blob is a devicemodel snapshot with its checksum;
+// "unit <part>" blobs hold the front ends' unit state.
 std::vector<std::uint8_t> encode_station_file(const StationSnapshot& snapshot);
 // Throws config::ConfigError naming the file and what is wrong.
 StationSnapshot decode_station_file(std::span<const std::uint8_t> bytes, const std::string& source);

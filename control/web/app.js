@@ -352,12 +352,17 @@ function addCallRow(cells, className) {
   while (body.rows.length > MAX_CALL_ROWS) body.deleteRow(-1);
 }
 
+// SLMP requests and the front ends' (protocol "hostlink", "jw51cm": a command
+// text, no subcommand, a two-character response code where 00 is normal).
 function addCall(call) {
-  const command = call.command ? `${call.command}/${call.subcommand}${call.name ? ' ' + call.name : ''}` : '—';
+  const frontEnd = call.protocol && call.protocol !== 'slmp';
+  const what = frontEnd ? `${call.protocol} ${call.command}` : `${call.command}/${call.subcommand}`;
+  const command = call.command ? `${what}${call.name ? ' ' + call.name : ''}` : (frontEnd ? call.protocol : '—');
   const devices = call.device ? `${call.device} ×${call.points} ${call.unit}` : (call.named || '');
   const endCode = call.end_code ?? (call.reaction === 'closed' ? 'closed' : 'no answer');
+  const ok = call.end_code === (frontEnd ? '00' : '0000');
   addCallRow([call.time.slice(11, 23), call.peer, command, devices, endCode, `${call.latency_us.toFixed(1)} µs`, call.note],
-    call.end_code === '0000' ? '' : 'error');
+    ok ? '' : 'error');
 }
 
 // An Ondemand push the CPU sent unasked (docs/timing.md): no request, no latency.

@@ -23,25 +23,29 @@ HostLink::HostLink(devicemodel::Cpu& cpu, Options options)
     : cpu_(cpu), options_(std::move(options)), environment_(options_.environment_bytes, 0),
       object_(options_.object_bytes, 0) {}
 
-HostLink::Result HostLink::handle(std::span<const std::uint8_t> stream, LinkState& link) {
+HostLink::Result HostLink::handle(std::span<const std::uint8_t> stream, LinkState& link, const frontends::Gate& gate) {
     auto cut = cut_record(stream);
-    Result result{cut.kind, cut.consumed, {}, {}};
+    Result result{cut.kind, cut.consumed, {}, {}, {}};
     if (cut.kind != Cut::Kind::Record) return result;
-    result.response = answer(cut.record, link, &result.command);
+    result.response = answer(cut.record, link, &result, gate);
     if (cut.wrapped && !result.response.empty()) result.response = kStx + result.response + kEtx;
     return result;
 }
 
-std::string HostLink::answer(std::string_view record, LinkState& link, std::string* command) {
+std::string HostLink::answer(std::string_view record, LinkState& link, Result* result, const frontends::Gate& gate) {
     // Without `*` CR or room for station, command and FCS there is no record to answer (§8: discard).
     if (record.size() < kFraming || record[record.size() - 2] != '*') return {};
     if (record.substr(1, 2) != "00") return {};   // another station: silence, as an OMRON PLC
     auto code = record.substr(3, 2);
-    if (command) *command = std::string(code);
+    if (result) result->command = std::string(code);
+    auto answered = [&](std::string_view response_code) {
+        if (result) result->code = std::string(response_code);
+    };
     auto body = record.substr(0, record.size() - 4);
     // QQ answers under its subcommand too: "QQMR" + code, "QQIR" + code + data (§6.9, §6.10).
     auto answered_as = code == "QQ" && body.size() >= 7 ? body.substr(3, 4) : code;
     auto with_code = [&](std::string_view response_code, std::string_view data = {}) {
+        answered(response_code);
         std::string reply = "@00";
         reply += answered_as;
         reply += response_code;
@@ -52,13 +56,25 @@ std::string HostLink::answer(std::string_view record, LinkState& link, std::stri
     if (record.size() > kMaxRecordBytes) return with_code("01");
     if (!same_hex(record.substr(record.size() - 4, 2), fcs(body))) return with_code(options_.fcs_error_code);
     const auto* row = find_command(code);
-    if (!row) return close_record("@00IC");   // §6.13: no response code, no data
+    if (!row) {
+        answered("IC");
+        return close_record("@00IC");   // §6.13: no response code, no data
+    }
+    if (gate) {   // a scenario fault: answer a chosen code, or nothing, and execute nothing
+        auto intercept = gate(code);
+        if (intercept.kind == frontends::Intercept::Kind::Silent) return {};
+        if (intercept.kind == frontends::Intercept::Kind::Answer) {
+            static constexpr char kDigits[] = "0123456789ABCDEF";
+            const char forced[] = {kDigits[intercept.code >> 4], kDigits[intercept.code & 0xF]};
+            return with_code(std::string_view(forced, 2));
+        }
+    }
     Context context{*this, link, AreaAccess(cpu_.memory(), options_.map), code, body.substr(5)};
     auto reply = row->handler(*row, context);
     switch (reply.kind) {
         case Answer::Kind::Silent: return {};
-        case Answer::Kind::Echo: return close_record(body);
-        case Answer::Kind::Unknown: return close_record("@00IC");
+        case Answer::Kind::Echo: answered("00"); return close_record(body);
+        case Answer::Kind::Unknown: answered("IC"); return close_record("@00IC");
         case Answer::Kind::Normal: break;
     }
     return with_code(reply.code, reply.code == "00" ? std::string_view(reply.data) : std::string_view());

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "devicemodel/cpu.hpp"
+#include "frontends/gate.hpp"
 #include "frontends/hostlink/memory_map.hpp"
 #include "frontends/hostlink/record.hpp"
 
@@ -49,12 +50,16 @@ public:
         std::size_t consumed = 0;
         std::string response;   // empty: nothing to send (silence, garbage, need more)
         std::string command;    // the record's command, for logs ("" when none)
+        std::string code;       // the response code answered ("00", "01", "IC"; "" for silence)
     };
-    // Cuts the first record from `stream` and answers it.
-    Result handle(std::span<const std::uint8_t> stream, LinkState& link);
+    // Cuts the first record from `stream` and answers it. `gate` (a scenario
+    // fault, frontends/gate.hpp) is asked once a known command's record is valid.
+    Result handle(std::span<const std::uint8_t> stream, LinkState& link, const frontends::Gate& gate = {});
     // The answer to one record (`@` … CR, without a wrapper): a response record,
     // or empty for silence (XZ, `**`, another station, a record without `*`).
-    std::string answer(std::string_view record, LinkState& link, std::string* command = nullptr);
+    // `result`, when given, gets the command and the response code.
+    std::string answer(std::string_view record, LinkState& link, Result* result = nullptr,
+                       const frontends::Gate& gate = {});
 
     const Options& options() const { return options_; }
     devicemodel::Cpu& cpu() { return cpu_; }

@@ -37,7 +37,7 @@ ComputerLink::ComputerLink(devicemodel::Cpu& cpu, Options options, Clock clock)
       map_(options_.file_bytes, options_.timers),
       clock_(clock ? std::move(clock) : Clock([] { return std::chrono::system_clock::now(); })) {}
 
-ComputerLink::Result ComputerLink::handle_stream(std::span<const std::uint8_t> stream) {
+ComputerLink::Result ComputerLink::handle_stream(std::span<const std::uint8_t> stream, const frontends::Gate& gate) {
     Result result;
     if (stream.size() < kMinRequest) return result;
     result.command = stream[kCom];
@@ -58,10 +58,10 @@ ComputerLink::Result ComputerLink::handle_stream(std::span<const std::uint8_t> s
     // is taken only when it arrived with the command (§7.2, inferred).
     if (row->com == 0xE8 && stream.size() == *length + 1) ++*length;
     if (stream.size() < *length) return result;
-    return answer(stream, *length);
+    return answer(stream, *length, gate);
 }
 
-ComputerLink::Result ComputerLink::handle_datagram(std::span<const std::uint8_t> datagram) {
+ComputerLink::Result ComputerLink::handle_datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate) {
     Result result;
     result.kind = Result::Kind::Drop;
     result.consumed = datagram.size();
@@ -78,10 +78,11 @@ ComputerLink::Result ComputerLink::handle_datagram(std::span<const std::uint8_t>
     bool e8_with_mode = row->com == 0xE8 && datagram.size() == kMinRequest + 1;
     // §4.1: a UDP command is at most 1024 bytes, and one datagram holds one command.
     if (!length || datagram.size() > kMaxData || (datagram.size() != *length && !e8_with_mode)) return refuse();
-    return answer(datagram, datagram.size());
+    return answer(datagram, datagram.size(), gate);
 }
 
-ComputerLink::Result ComputerLink::answer(std::span<const std::uint8_t> request, std::size_t length) {
+ComputerLink::Result ComputerLink::answer(std::span<const std::uint8_t> request, std::size_t length,
+                                          const frontends::Gate& gate) {
     Result result;
     result.kind = Result::Kind::Respond;
     result.consumed = length;
@@ -92,6 +93,19 @@ ComputerLink::Result ComputerLink::answer(std::span<const std::uint8_t> request,
     if (!zero_header(frame)) {
         result.response = response_frame(frame, Rslt::Format);
         return result;
+    }
+    if (gate) {   // a scenario fault: answer a chosen RSLT, or nothing, and execute nothing
+        static constexpr char kDigits[] = "0123456789ABCDEF";
+        const char com[] = {kDigits[row.com >> 4], kDigits[row.com & 0xF]};
+        auto intercept = gate(std::string_view(com, 2));
+        if (intercept.kind == frontends::Intercept::Kind::Silent) {
+            result.kind = Result::Kind::Drop;
+            return result;
+        }
+        if (intercept.kind == frontends::Intercept::Kind::Answer) {
+            result.response = response_frame(frame, static_cast<Rslt>(intercept.code));
+            return result;
+        }
     }
     Rslt rslt = Rslt::Ok;
     std::vector<std::uint8_t> text;

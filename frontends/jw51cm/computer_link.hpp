@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "devicemodel/cpu.hpp"
+#include "frontends/gate.hpp"
 #include "frontends/jw51cm/memory_map.hpp"
 
 namespace slmp::jw51cm {
@@ -51,9 +52,11 @@ public:
     // One request from the front of a TCP stream. `whole_segment`: the stream
     // is exactly what has arrived (E8 swallows one more byte only when it came
     // in the same segment, §7.2).
-    Result handle_stream(std::span<const std::uint8_t> stream);
+    // `gate` (a scenario fault, frontends/gate.hpp) is asked once a whole,
+    // well-formed request's COM is known, before the gates of §19.
+    Result handle_stream(std::span<const std::uint8_t> stream, const frontends::Gate& gate = {});
     // One UDP datagram: one request, its length must be exactly the COM's.
-    Result handle_datagram(std::span<const std::uint8_t> datagram);
+    Result handle_datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate = {});
 
     std::uint8_t write_mode() const { return write_mode_; }
     const MemoryMap& map() const { return map_; }
@@ -69,7 +72,7 @@ public:
     std::chrono::system_clock::time_point now() const { return clock_(); }
 
 private:
-    Result answer(std::span<const std::uint8_t> request, std::size_t length);
+    Result answer(std::span<const std::uint8_t> request, std::size_t length, const frontends::Gate& gate);
 
     devicemodel::Cpu& cpu_;
     Options options_;
