@@ -27,8 +27,8 @@ struct Fd {
 
 }  // namespace
 
-StateStore::StateStore(std::filesystem::path dir)
-    : dir_(std::move(dir)), file_(dir_ / "snapshot.bin"), temp_(dir_ / "snapshot.bin.tmp") {
+StateStore::StateStore(std::filesystem::path dir, const std::string& name)
+    : dir_(std::move(dir)), file_(dir_ / name), temp_(dir_ / (name + ".tmp")) {
     std::error_code ec;
     std::filesystem::create_directories(dir_, ec);
     if (ec || !std::filesystem::is_directory(dir_))

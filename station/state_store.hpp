@@ -1,4 +1,4 @@
-// The state directory's one file, written so that a crash at any moment leaves
+// A file of the state directory, written so that a crash at any moment leaves
 // either the old or the new snapshot, never a torn one: write a temporary file,
 // fsync it, rename it over the old one, fsync the directory.
 #pragma once
@@ -7,14 +7,16 @@
 #include <filesystem>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace slmp::station {
 
 class StateStore {
 public:
-    // Creates the directory when missing; throws config::ConfigError when it cannot.
-    explicit StateStore(std::filesystem::path dir);
+    // Creates the directory when missing; throws config::ConfigError when it
+    // cannot. `name` is the file: the device snapshot, or the drives' memo.
+    explicit StateStore(std::filesystem::path dir, const std::string& name = "snapshot.bin");
 
     const std::filesystem::path& file() const { return file_; }
     // The saved snapshot, or nullopt when there is none yet.
