@@ -75,6 +75,9 @@ void parse_file_drives(const JsonAt& root, devicemodel::CpuProfile& cpu, protoco
                 "alias a drive listed in file_drives");
     }
     if (cpu.drives.empty()) return;
+    if (!root.has("file_end_codes"))
+        root.fail("a profile with file_drives needs file_end_codes",
+                  "give the end code of every refused file operation (docs/end-codes.md)");
     auto codes = root["file_end_codes"];
     codes.expect_object();
     for (std::size_t i = 1; i < devicemodel::kFileFaultCount; ++i) {

@@ -112,5 +112,5 @@ TEST_CASE("file_drives mistakes name the key and the fix", "[profiles][drives]")
     CHECK(fx.cpu.drives.empty());
     CHECK_THROWS_WITH(config::parse_profile(R"({"name": "FX-sd", "extends": "FX5U-32MR", "description": "test",
         "file_drives": {"2": {"kind": "sd_card", "capacity": 1}}})", "fx.json"),
-                      Catch::Contains("fx.json: /file_end_codes"));
+                      Catch::Contains("fx.json: /: a profile with file_drives needs file_end_codes"));
 }
