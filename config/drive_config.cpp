@@ -55,9 +55,9 @@ DriveConfig parse_drive_option(const std::string& text) {
 }
 
 void attach_drives(devicemodel::Cpu& cpu, const ServerConfig& config) {
-    auto drives = std::make_shared<devicemodel::DriveSet>(cpu.profile().family);
+    auto drives = std::make_shared<devicemodel::DriveSet>(cpu.profile().drives);
     const auto& state_dir = config.persistence.state_dir;
-    for (auto spec : devicemodel::family_drives(cpu.profile().family)) {
+    for (auto spec : cpu.profile().drives) {
         if (spec.alias_of) continue;
         // Later entries win: the configuration file's, then --drive's.
         const DriveConfig* chosen = nullptr;
@@ -99,7 +99,7 @@ void attach_drives(devicemodel::Cpu& cpu, const ServerConfig& config) {
             for (const auto& [name, password] : d->passwords) drives->set_password(spec.number, name, password);
     }
     for (const auto& d : config.drives) {
-        auto family = devicemodel::family_drives(cpu.profile().family);
+        const auto& family = cpu.profile().drives;
         bool known = false, alias = false;
         for (const auto& spec : family)
             if (spec.number == d.number) known = true, alias = spec.alias_of.has_value();

@@ -9,6 +9,7 @@
 #include "config/config.hpp"
 #include "config/config_parts.hpp"
 #include "config/json_path.hpp"
+#include "config/profile_drives.hpp"
 
 namespace slmp::config {
 
@@ -86,7 +87,7 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
                     "unsupported_commands", "end_codes", "limits", "device_sizes", "start_only_range_check",
                     "read_only_devices", "size_registers", "zr_ascii_hex", "mixed_block_write",
                     "station_buffer_words", "remote_password_length", "online_change", "frame_1e",
-                    "station_extended_frame", "pipeline", "timing"});
+                    "station_extended_frame", "pipeline", "timing", "file_drives", "file_end_codes"});
     Profile profile;
     auto& p = profile.cpu;
     auto& port = profile.port;
@@ -189,6 +190,7 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
         if (p.password_min_length == 0 || p.password_min_length > p.password_max_length)
             rule.fail("min must be 1..max", "write e.g. [6, 32] (iQ-R) or [4, 4] (Q/L)");
     }
+    parse_file_drives(root, p, port);
     return profile;
 }
 

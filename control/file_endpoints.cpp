@@ -10,6 +10,7 @@
 
 #include "control/api.hpp"
 #include "devicemodel/drives.hpp"
+#include "protocol/lock_owner.hpp"
 
 namespace slmp::control {
 
@@ -109,8 +110,11 @@ json lock_list(Api& api) {
     for (const auto& f : api.station.cpu().drives().open_files()) {
         std::string path;
         for (const auto& name : f.path) path += (path.empty() ? "" : "\\") + name;
-        list.push_back({{"pointer", f.pointer}, {"drive", f.drive}, {"path", path},
-                        {"mode", f.mode == devicemodel::OpenMode::Write ? "write" : "read"}, {"connection", f.owner}});
+        json item{{"pointer", f.pointer}, {"drive", f.drive}, {"path", path},
+                  {"mode", f.mode == devicemodel::OpenMode::Write ? "write" : "read"}, {"connection", f.owner}};
+        // A UDP owner is a peer, not a connection: name it (docs/files.md).
+        if (auto peer = protocol::udp_owner_text(f.owner)) item["peer"] = *peer;
+        list.push_back(std::move(item));
     }
     return json{{"locks", std::move(list)}};
 }

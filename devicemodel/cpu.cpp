@@ -21,7 +21,7 @@ Cpu::Cpu(CpuProfile profile) : profile_(std::move(profile)), memory_(profile_.si
         station_buffer_ = std::make_unique<DeviceMemory>(only(Area::G, profile_.station_buffer_words));
     publish_device_sizes();
     runtime_.configure({}, memory_);   // powered on with the default parameters
-    drives_ = std::make_shared<DriveSet>(profile_.family);   // in memory until configured
+    drives_ = std::make_shared<DriveSet>(profile_.drives);   // in memory until configured
 }
 
 Module* Cpu::module(std::uint16_t io_number) {

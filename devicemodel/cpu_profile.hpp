@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "devicemodel/device_table.hpp"
+#include "devicemodel/drive_spec.hpp"
 
 namespace slmp::devicemodel {
 
@@ -42,6 +43,10 @@ struct CpuProfile {
     // characters, iQ-R 6-32. 0/0: the port has no remote password (1630/1631 -> C059).
     std::uint8_t password_min_length = 0;
     std::uint8_t password_max_length = 0;
+
+    // The file drives (profile "file_drives", docs/files.md): none on a CPU
+    // whose port does not serve the file commands.
+    std::vector<DriveSpec> drives;
 
     std::uint32_t size(Area area) const { return sizes[static_cast<std::size_t>(area)]; }
 };

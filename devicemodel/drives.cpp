@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <ctime>
 
 namespace slmp::devicemodel {
 namespace {
@@ -47,61 +48,8 @@ bool fits_83(const std::string& name) { return split_checked(name, NameForm::Sho
 
 }  // namespace
 
-std::string_view drive_kind_name(DriveKind kind) {
-    switch (kind) {
-        case DriveKind::ProgramMemory: return "program memory";
-        case DriveKind::SramCard: return "SRAM card";
-        case DriveKind::SdCard: return "SD memory card";
-        case DriveKind::StandardRam: return "standard RAM";
-        case DriveKind::StandardRom: return "standard ROM";
-        case DriveKind::DeviceLabelMemory: return "device/label memory";
-        case DriveKind::DataMemory: return "data memory";
-    }
-    return "drive";
-}
-
-std::string_view describe(FileFault fault) {
-    switch (fault) {
-        case FileFault::None: return "ok";
-        case FileFault::NoDrive: return "no such drive on this CPU, or no card in the slot";
-        case FileFault::BadName: return "not a valid file name or path for this CPU";
-        case FileFault::NotFound: return "no such file or folder";
-        case FileFault::Exists: return "a file of that name exists";
-        case FileFault::NotAFile: return "a folder where a file is meant";
-        case FileFault::NoCapacity: return "the drive's capacity would be exceeded";
-        case FileFault::WriteProtected: return "the drive is write-protected (SD card LOCK switch)";
-        case FileFault::ReadOnly: return "the file is read-only (attribute 01H)";
-        case FileFault::Locked: return "the file is locked by an open (1827) of another client or mode";
-        case FileFault::Password: return "the file password does not match";
-        case FileFault::BadPointer: return "no file is open with that file pointer No.";
-        case FileFault::NotWriteMode: return "the file was opened for reading";
-        case FileFault::OutOfRange: return "offset or length past the file's size";
-        case FileFault::TooManyOpen: return "every file pointer No. is in use";
-        case FileFault::HostError: return "the host refused the file operation";
-    }
-    return "file error";
-}
-
-// Capacities are the simulator's defaults (docs/files.md), not one model's.
-std::vector<DriveSpec> family_drives(Family family) {
-    using enum DriveKind;
-    switch (family) {
-        case Family::IQR:
-            return {{1, DeviceLabelMemory, 0, true, false, 3},
-                    {2, SdCard, 8u << 20, true, false, std::nullopt},
-                    {3, DeviceLabelMemory, 512u << 10, true, false, std::nullopt},
-                    {4, DataMemory, 5u << 20, true, false, std::nullopt}};
-        case Family::QnU:
-        case Family::L:
-        case Family::QJ71E71:
-            return {{0, ProgramMemory, 240u << 10, true, false, std::nullopt},
-                    {1, SramCard, 1u << 20, false, false, std::nullopt},
-                    {2, SdCard, 8u << 20, true, false, std::nullopt},
-                    {3, StandardRam, 768u << 10, true, false, std::nullopt},
-                    {4, StandardRom, 1u << 20, true, false, std::nullopt}};
-        case Family::IQF: return {};
-    }
-    return {};
+std::int64_t DriveSet::now() const {
+    return clock_ ? clock_() : static_cast<std::int64_t>(std::time(nullptr));
 }
 
 HostPath DriveSet::Resolved::path() const {
@@ -110,8 +58,8 @@ HostPath DriveSet::Resolved::path() const {
     return out;
 }
 
-DriveSet::DriveSet(Family family) : family_(family) {
-    for (const auto& spec : family_drives(family)) {
+DriveSet::DriveSet(const std::vector<DriveSpec>& specs) {
+    for (const auto& spec : specs) {
         auto& drive = drives_[spec.number];
         drive.spec = spec;
         if (!spec.alias_of) drive.store = std::make_unique<MemoryStore>();
@@ -134,11 +82,38 @@ void DriveSet::set_password(std::uint16_t drive, const std::string& name, const 
 }
 
 void DriveSet::set_write_protect(std::uint16_t drive, bool on) {
-    if (auto* d = drive_for(drive)) d->spec.write_protect = on;
+    auto* d = drive_for(drive);
+    if (!d || d->spec.write_protect == on) return;
+    d->spec.write_protect = on;
+    changed();
 }
 
 void DriveSet::set_present(std::uint16_t drive, bool on) {
-    if (auto* d = drive_for(drive)) d->spec.present = on;
+    auto* d = drive_for(drive);
+    if (!d || d->spec.present == on) return;
+    d->spec.present = on;
+    changed();
+}
+
+std::vector<DriveMemo> DriveSet::memos() const {
+    std::vector<DriveMemo> out;
+    for (const auto& [number, drive] : drives_) {
+        if (!drive.store) continue;   // an alias keeps nothing of its own
+        out.push_back({number, drive.spec.present, drive.spec.write_protect, drive.slots, drive.attributes});
+    }
+    return out;
+}
+
+void DriveSet::restore(const DriveMemo& memo, bool switches) {
+    auto it = drives_.find(memo.number);
+    if (it == drives_.end() || !it->second.store) return;
+    auto& drive = it->second;
+    drive.slots = memo.slots;
+    drive.attributes = memo.attributes;
+    if (switches) {
+        drive.spec.present = memo.present;
+        drive.spec.write_protect = memo.write_protect;
+    }
 }
 
 std::uint16_t DriveSet::resolve_number(std::uint16_t number) const {
@@ -192,6 +167,7 @@ std::uint64_t DriveSet::used(const Drive& drive) const {
 
 std::vector<std::string>& DriveSet::slots(Drive& drive, const HostPath& folder, const std::vector<HostEntry>& entries) {
     auto& slots = drive.slots[key_of(folder)];
+    const auto before = slots;
     if (slots.empty() && !folder.empty()) slots = {".", ".."};   // §6.1: "." and ".." are slots 1 and 2
     for (auto& name : slots) {
         if (name.empty() || name == "." || name == "..") continue;
@@ -206,6 +182,7 @@ std::vector<std::string>& DriveSet::slots(Drive& drive, const HostPath& folder, 
         else
             slots.push_back(entry.name);
     }
+    if (slots != before) changed();
     return slots;
 }
 
@@ -354,7 +331,7 @@ FileFault DriveSet::create(const FileRef& file, NameForm form, std::uint64_t siz
     if (r.entry) return FileFault::Exists;
     if (used(*r.drive) + size > r.drive->spec.capacity) return FileFault::NoCapacity;
     std::vector<std::uint8_t> zeros(size, 0);   // the reserved area, zero-filled (§8.2)
-    if (!r.drive->store->write(r.path(), zeros)) return FileFault::HostError;
+    if (!r.drive->store->write(r.path(), zeros, now())) return FileFault::HostError;
     if (auto entries = r.drive->store->list(r.parent)) slots(*r.drive, r.parent, *entries);
     return FileFault::None;
 }
@@ -390,8 +367,8 @@ FileFault DriveSet::copy(const FileRef& to, const FileRef& from, NameForm form) 
     if (!bytes) return FileFault::HostError;
     if (used(*dst.drive) + bytes->size() > dst.drive->spec.capacity) return FileFault::NoCapacity;
     auto target = dst.path();
-    if (!dst.drive->store->write(target, *bytes)) return FileFault::HostError;
-    dst.drive->store->set_mtime(target, src.entry->mtime);   // the copy keeps the source's date (inferred)
+    // The copy keeps the source's date (inferred).
+    if (!dst.drive->store->write(target, *bytes, src.entry->mtime)) return FileFault::HostError;
     auto attr = attribute_of(*src.drive, source_path, *src.entry);
     if (attr != kArchive) dst.drive->attributes[key_of(target)] = attr;
     if (auto entries = dst.drive->store->list(dst.parent)) slots(*dst.drive, dst.parent, *entries);
@@ -407,6 +384,7 @@ FileFault DriveSet::set_attribute(const FileRef& file, NameForm form, std::uint8
     auto path = r.path();
     if (is_open(resolve_number(file.drive), path)) return FileFault::Locked;
     r.drive->attributes[key_of(path)] = static_cast<std::uint8_t>(attribute & ~kDirectory);
+    changed();
     return FileFault::None;
 }
 
@@ -468,7 +446,7 @@ FileFault DriveSet::write(std::uint16_t number, FileOwner owner, std::uint32_t o
     // Not past the size reserved by 1820 (the file's size, §8.2).
     if (static_cast<std::uint64_t>(offset) + data.size() > bytes->size()) return FileFault::OutOfRange;
     std::copy(data.begin(), data.end(), bytes->begin() + offset);
-    return drive->store->write(f->path, *bytes) ? FileFault::None : FileFault::HostError;
+    return drive->store->write(f->path, *bytes, now()) ? FileFault::None : FileFault::HostError;
 }
 
 FileFault DriveSet::close(std::uint16_t number, FileOwner owner, std::uint16_t type) {
@@ -514,7 +492,7 @@ FileFault DriveSet::host_write(const FileRef& file, std::span<const std::uint8_t
     if (is_open(resolve_number(file.drive), path)) return FileFault::Locked;
     auto current = r.entry ? r.entry->size : 0;
     if (used(*r.drive) - current + data.size() > r.drive->spec.capacity) return FileFault::NoCapacity;
-    if (!r.drive->store->write(path, data)) return FileFault::HostError;
+    if (!r.drive->store->write(path, data, now())) return FileFault::HostError;
     if (auto entries = r.drive->store->list(r.parent)) slots(*r.drive, r.parent, *entries);
     return FileFault::None;
 }
@@ -523,7 +501,7 @@ FileFault DriveSet::host_make_directory(const FileRef& dir) {
     Resolved r;
     if (auto fault = resolve(dir, NameForm::Long, r); fault != FileFault::None) return fault;
     if (r.entry) return FileFault::Exists;
-    if (!r.drive->store->make_directory(r.path())) return FileFault::HostError;
+    if (!r.drive->store->make_directory(r.path(), now())) return FileFault::HostError;
     if (auto entries = r.drive->store->list(r.parent)) slots(*r.drive, r.parent, *entries);
     return FileFault::None;
 }

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -18,50 +19,10 @@
 #include <string>
 #include <vector>
 
-#include "devicemodel/cpu_profile.hpp"
+#include "devicemodel/drive_spec.hpp"
 #include "devicemodel/file_store.hpp"
 
 namespace slmp::devicemodel {
-
-enum class DriveKind : std::uint8_t {
-    ProgramMemory, SramCard, SdCard, StandardRam, StandardRom, DeviceLabelMemory, DataMemory
-};
-std::string_view drive_kind_name(DriveKind kind);
-
-struct DriveSpec {
-    std::uint16_t number = 0;
-    DriveKind kind = DriveKind::SdCard;
-    std::uint64_t capacity = 0;       // bytes of file data the drive holds
-    bool present = true;              // false: a card slot with no card
-    bool write_protect = false;       // the SD card's LOCK switch
-    std::optional<std::uint16_t> alias_of;   // iQ-R drive 1 -> drive 3
-};
-
-// The family's drives (docs/files.md): iQ-R 1 (alias of 3), 2, 3, 4; Q/L
-// (and a QJ71E71 in front of a Q CPU) 0-4; FX5 none (its port refuses the
-// file commands).
-std::vector<DriveSpec> family_drives(Family family);
-
-// Why a file operation was refused; the protocol turns each into an end code.
-enum class FileFault : std::uint8_t {
-    None,
-    NoDrive,          // no such drive on this CPU, or the card is not inserted
-    BadName,          // not a valid name for the dialect: "..", "\", device names, too long
-    NotFound,         // no such file or directory
-    Exists,           // 1820/1824: the name is taken
-    NotAFile,         // a directory where a file is meant
-    NoCapacity,       // the drive's capacity would be exceeded
-    WriteProtected,   // the LOCK switch
-    ReadOnly,         // attribute 01H: no write, no delete
-    Locked,           // another open holds the file (delete, write-open, close type 0 of another's pointer)
-    Password,         // the file's password does not match
-    BadPointer,       // 1828/1829/182A: no file open with that pointer No.
-    NotWriteMode,     // 1829 on a pointer opened for reading
-    OutOfRange,       // offset/length past the file's size
-    TooManyOpen,      // every pointer No. is in use
-    HostError,        // the host refused a read or write (disk full, permissions)
-};
-std::string_view describe(FileFault fault);
 
 // How names arrive: 0000/0004 = one 8.3 name in the drive's root (raw bytes);
 // 0040 = a UTF-8 path from the root, "\" between names, ≤ 64 characters a
@@ -105,11 +66,38 @@ std::uint16_t dos_date(std::int64_t seconds);
 // nullopt: not a valid date/time (month 0, hour 24, ...).
 std::optional<std::int64_t> from_dos(std::uint16_t date, std::uint16_t time);
 
+// What a drive keeps besides its files, for the state directory
+// (station/drive_state.cpp): file Nos. with their tombstones, the attributes
+// 1825 set, and the switches (card inserted, LOCK).
+struct DriveMemo {
+    std::uint16_t number = 0;
+    bool present = true;
+    bool write_protect = false;
+    std::map<std::string, std::vector<std::string>> slots;   // folder key -> slot names ("" = tombstone)
+    std::map<std::string, std::uint8_t> attributes;          // file key -> FAT attribute
+};
+
 class DriveSet {
 public:
     static constexpr std::size_t kMaxOpenFiles = 16;   // pointer No. 0-15 (inferred, docs/files.md)
 
-    explicit DriveSet(Family family);
+    // The CPU's drives as its profile lists them ("file_drives"), in memory
+    // until configure() gives each its store.
+    explicit DriveSet(const std::vector<DriveSpec>& drives);
+
+    // The CPU's calendar in seconds since the epoch: what 1820, 1829 and an
+    // HTTP upload date a file with. The station gives its virtual clock
+    // (--clock frozen, --clock-speed); until then, the host's time.
+    using Clock = std::function<std::int64_t()>;
+    void set_clock(Clock clock) { clock_ = std::move(clock); }
+
+    // Called after anything a DriveMemo holds changed (a file No. taken or
+    // freed, an attribute, a switch), so the state directory can save it.
+    void set_on_change(std::function<void()> on_change) { on_change_ = std::move(on_change); }
+    std::vector<DriveMemo> memos() const;
+    // A saved memo back (at start, before any request); a drive this CPU
+    // lacks is skipped. The switches come back only with `switches`.
+    void restore(const DriveMemo& memo, bool switches);
 
     // Replaces a drive's limits and store (config); the drive must exist.
     void configure(const DriveSpec& spec, std::unique_ptr<FileStore> store);
@@ -179,6 +167,7 @@ private:
         HostPath path() const;
     };
 
+    std::int64_t now() const;
     Drive* drive_for(std::uint16_t number);
     const Drive* drive_for(std::uint16_t number) const;
     FileFault resolve(const FileRef& file, NameForm form, Resolved& out);
@@ -190,9 +179,13 @@ private:
     bool is_open(std::uint16_t drive, const HostPath& path) const;
     OpenFile* pointer(std::uint16_t number);
 
-    Family family_;
     std::map<std::uint16_t, Drive> drives_;
     std::vector<OpenFile> open_;
+    Clock clock_;
+    std::function<void()> on_change_;
+    void changed() const {
+        if (on_change_) on_change_();
+    }
 };
 
 // Checks one name or path for the dialect and splits it into names; nullopt

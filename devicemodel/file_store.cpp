@@ -20,8 +20,6 @@ namespace {
 // leaves nothing a client can see.
 constexpr std::string_view kTempPrefix = ".slmp-tmp-";
 
-std::int64_t now_seconds() { return static_cast<std::int64_t>(std::time(nullptr)); }
-
 struct Fd {
     int fd = -1;
     ~Fd() {
@@ -91,14 +89,16 @@ std::optional<std::vector<std::uint8_t>> FolderStore::read(const HostPath& file)
 
 // Temp file, fsync, rename over, fsync the folder: the way station/state_store.cpp
 // saves device memory, so kill -9 leaves the file before or after a write.
-bool FolderStore::write(const HostPath& file, std::span<const std::uint8_t> bytes) {
+bool FolderStore::write(const HostPath& file, std::span<const std::uint8_t> bytes, std::int64_t mtime) {
     auto path = host(file);
     auto dir = path.parent_path();
     auto temp = dir / (std::string(kTempPrefix) + path.filename().string());
     {
         Fd out{::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644)};
         if (out.fd < 0) return false;
-        if (!write_all(out.fd, bytes) || ::fsync(out.fd) != 0) {
+        // The date goes on before the rename, so the file appears with it.
+        struct ::timespec times[2] = {{0, UTIME_OMIT}, {static_cast<time_t>(mtime), 0}};
+        if (!write_all(out.fd, bytes) || ::futimens(out.fd, times) != 0 || ::fsync(out.fd) != 0) {
             ::unlink(temp.c_str());
             return false;
         }
@@ -126,9 +126,9 @@ bool FolderStore::set_mtime(const HostPath& file, std::int64_t mtime) {
     return ::utimensat(AT_FDCWD, host(file).c_str(), times, AT_SYMLINK_NOFOLLOW) == 0;
 }
 
-bool FolderStore::make_directory(const HostPath& dir) {
+bool FolderStore::make_directory(const HostPath& dir, std::int64_t mtime) {
     std::error_code ec;
-    return fs::create_directory(host(dir), ec) && !ec;
+    return fs::create_directory(host(dir), ec) && !ec && set_mtime(dir, mtime);
 }
 
 // --- MemoryStore ---------------------------------------------------------------
@@ -165,11 +165,11 @@ std::optional<std::vector<std::uint8_t>> MemoryStore::read(const HostPath& file)
     return it->second.bytes;
 }
 
-bool MemoryStore::write(const HostPath& file, std::span<const std::uint8_t> bytes) {
+bool MemoryStore::write(const HostPath& file, std::span<const std::uint8_t> bytes, std::int64_t mtime) {
     auto& node = nodes_[key(file)];
     node.directory = false;
     node.bytes.assign(bytes.begin(), bytes.end());
-    node.mtime = now_seconds();
+    node.mtime = mtime;
     return true;
 }
 
@@ -182,11 +182,11 @@ bool MemoryStore::set_mtime(const HostPath& file, std::int64_t mtime) {
     return true;
 }
 
-bool MemoryStore::make_directory(const HostPath& dir) {
+bool MemoryStore::make_directory(const HostPath& dir, std::int64_t mtime) {
     auto [it, added] = nodes_.try_emplace(key(dir));
     if (added) {
         it->second.directory = true;
-        it->second.mtime = now_seconds();
+        it->second.mtime = mtime;
     }
     return added;
 }

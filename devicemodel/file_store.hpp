@@ -33,11 +33,12 @@ public:
     // The entries of a directory, sorted by name; nullopt when it is not one.
     virtual std::optional<std::vector<HostEntry>> list(const HostPath& dir) const = 0;
     virtual std::optional<std::vector<std::uint8_t>> read(const HostPath& file) const = 0;
-    // Replaces (or creates) a file whole: a crash leaves the old or the new content.
-    virtual bool write(const HostPath& file, std::span<const std::uint8_t> bytes) = 0;
+    // Replaces (or creates) a file whole, dated `mtime` (the CPU's clock, not
+    // the host's): a crash leaves the old or the new content.
+    virtual bool write(const HostPath& file, std::span<const std::uint8_t> bytes, std::int64_t mtime) = 0;
     virtual bool remove(const HostPath& file) = 0;
     virtual bool set_mtime(const HostPath& file, std::int64_t mtime) = 0;
-    virtual bool make_directory(const HostPath& dir) = 0;
+    virtual bool make_directory(const HostPath& dir, std::int64_t mtime) = 0;
     // Where files are, for messages and the API ("memory" for a MemoryStore).
     virtual std::string location() const = 0;
 };
@@ -47,10 +48,10 @@ public:
     explicit FolderStore(std::filesystem::path root);
     std::optional<std::vector<HostEntry>> list(const HostPath& dir) const override;
     std::optional<std::vector<std::uint8_t>> read(const HostPath& file) const override;
-    bool write(const HostPath& file, std::span<const std::uint8_t> bytes) override;
+    bool write(const HostPath& file, std::span<const std::uint8_t> bytes, std::int64_t mtime) override;
     bool remove(const HostPath& file) override;
     bool set_mtime(const HostPath& file, std::int64_t mtime) override;
-    bool make_directory(const HostPath& dir) override;
+    bool make_directory(const HostPath& dir, std::int64_t mtime) override;
     std::string location() const override { return root_.string(); }
 
 private:
@@ -62,10 +63,10 @@ class MemoryStore final : public FileStore {
 public:
     std::optional<std::vector<HostEntry>> list(const HostPath& dir) const override;
     std::optional<std::vector<std::uint8_t>> read(const HostPath& file) const override;
-    bool write(const HostPath& file, std::span<const std::uint8_t> bytes) override;
+    bool write(const HostPath& file, std::span<const std::uint8_t> bytes, std::int64_t mtime) override;
     bool remove(const HostPath& file) override;
     bool set_mtime(const HostPath& file, std::int64_t mtime) override;
-    bool make_directory(const HostPath& dir) override;
+    bool make_directory(const HostPath& dir, std::int64_t mtime) override;
     std::string location() const override { return "memory"; }
 
 private:

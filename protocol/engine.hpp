@@ -32,6 +32,11 @@ struct MonitorRegistration {
 // with the remote password lock.
 struct Session {
     std::uint64_t id = 0;
+    // Who owns the file locks of the request being served (1827-182A): the
+    // connection, or for UDP the peer (protocol/lock_owner.hpp); set by
+    // station::Station::handle before each request, 0 = the session id.
+    std::uint64_t file_owner = 0;
+    std::uint64_t lock_owner() const { return file_owner ? file_owner : id; }
     MonitorRegistration monitor;   // per connection: another client's 0801 does not replace it
     // Remote password (1630/1631): a connection starts locked whenever the CPU
     // has a password and its port has the password enabled; Unlock opens this

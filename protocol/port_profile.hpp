@@ -6,10 +6,12 @@
 // Facts: ../shared/spec/hardware-behaviour.md §2–§4, §7.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "devicemodel/device_table.hpp"
+#include "devicemodel/drive_spec.hpp"
 
 namespace slmp::protocol {
 
@@ -64,6 +66,9 @@ struct PortProfile {
     // (4004, inferred: the 4xxx "system protect" code of Q/L CPUs).
     std::uint16_t system_protect_code = 0x4004;
     bool online_change = true;                     // the port's default: writes served in RUN
+    // What each refused file operation answers (profile "file_end_codes",
+    // docs/end-codes.md), indexed by devicemodel::FileFault; [None] is 0.
+    std::array<std::uint16_t, devicemodel::kFileFaultCount> file_end_codes{};
 
     PointLimit batch_words;           // 0401/1401 word units
     PointLimit batch_bits_binary;     // 0401/1401 bit units, binary code

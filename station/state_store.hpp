@@ -1,4 +1,4 @@
-// The state directory's one file, written so that a crash at any moment leaves
+// A file of the state directory, written so that a crash at any moment leaves
 // either the old or the new snapshot, never a torn one: write a temporary file,
 // fsync it, rename it over the old one, fsync the directory.
 #pragma once
@@ -15,7 +15,8 @@ namespace slmp::station {
 class StateStore {
 public:
     // Creates the directory when missing; throws config::ConfigError when it cannot.
-    // `name`: the file in it (the device memory's snapshot.bin, the front ends' units.bin).
+    // `name`: the file in it (the device memory's snapshot.bin, the front ends'
+    // units.bin, the drives' memo).
     explicit StateStore(std::filesystem::path dir, const std::string& name = "snapshot.bin");
 
     const std::filesystem::path& file() const { return file_; }

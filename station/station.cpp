@@ -4,8 +4,10 @@
 
 #include <spdlog/spdlog.h>
 
+#include "protocol/lock_owner.hpp"
 #include "station/log_outcome.hpp"
 #include "protocol/error_response.hpp"
+#include "station/drive_state.hpp"
 #include "station/persistence.hpp"
 #include "station/response_timing.hpp"
 #include "station/scan_loop.hpp"
@@ -58,7 +60,14 @@ void Station::start_cpu_runtime(boost::asio::io_context& io) {
     if (!config_.persistence.state_dir.empty()) {
         persistence_ = std::make_unique<Persistence>(io, cpu_, config_.persistence);
         persistence_->restore();
+        drive_state_ = std::make_unique<DriveState>(config_.persistence.state_dir, cpu_.drives(), cpu_.profile().name);
+        drive_state_->restore();
+        cpu_.drives().set_on_change([this] { drive_state_->save(); });
     }
+    // Files are dated by the CPU's calendar, which --clock frozen stops too.
+    cpu_.drives().set_clock([this] {
+        return std::chrono::duration_cast<std::chrono::seconds>(scan_->clock().calendar().time_since_epoch()).count();
+    });
 }
 
 void Station::start() {
@@ -91,6 +100,7 @@ protocol::Session Station::new_session(const config::PortConfig& port) {
 Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
                         const protocol::Peer& peer, const Service* service) {
     activity_.request_starting();
+    session.file_owner = protocol::lock_owner(peer, session.id);   // UDP: each peer its own (docs/files.md)
     auto started = std::chrono::steady_clock::now();
     // Decode once; the scenario hook sits between decode and execute.
     scenarios::Incoming incoming{engine_.decode(input, policy, session.own)};

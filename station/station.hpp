@@ -28,6 +28,7 @@ namespace slmp::jw51cm { class ComputerLink; }
 
 namespace slmp::station {
 
+class DriveState;
 class Persistence;
 class ResponseTiming;
 class ScanLoop;
@@ -179,6 +180,7 @@ private:
     ScenarioHook scenario_;
     std::unique_ptr<ScanLoop> scan_;                     // null in a bare station
     std::unique_ptr<Persistence> persistence_;           // null without a state directory
+    std::unique_ptr<DriveState> drive_state_;            // null without a state directory
     std::vector<scenarios::Scenario> pending_scenarios_;   // loaded, started by connect()
     Transports* transports_ = nullptr;                   // connect()
     std::unique_ptr<ScenarioStation> scenario_station_;  // null without scenarios

@@ -20,6 +20,7 @@ function showStationPage(isPlant) {
     .then(startTrend)   // device names need the device table startStation() reads
     .catch((e) => showMessage(`cannot start the monitor: ${e.message}`));
   startLabels().catch((e) => showMessage(`labels: ${e.message}`));
+  startFiles().catch((e) => showMessage(`files: ${e.message}`));
 }
 
 async function main() {

@@ -35,6 +35,8 @@ void put_text(FieldWriter& out, const std::string& text) {
 bool family_accepts(const CommandContext& ctx, bool iqr_form_exists) {
     const auto family = ctx.cpu.profile().family;
     const auto sub = ctx.spec.subcommand;
+    // A CPU whose profile lists no drives (FX5) has no file commands at all.
+    if (ctx.cpu.profile().drives.empty()) return false;
     if (!iqr_form_exists) return sub == 0x0000;
     if (family == Family::IQR) return sub == 0x0040;
     if (sub == 0x0004) return family == Family::L;   // *4: 0004 cannot reach a QCPU
@@ -113,26 +115,9 @@ std::size_t entry_bytes(const Dialect& d, const devicemodel::FileEntry& entry) {
 
 // Neither manual lists file end codes (§7); these are the MELSEC CPU codes
 // for the conditions, chosen and explained in docs/end-codes.md.
-EndCode end_code_for(FileFault fault) {
-    switch (fault) {
-        case FileFault::None: return EndCode::Ok;
-        case FileFault::NoDrive: return end_code(0x4021);
-        case FileFault::BadName: return kNotHandled;
-        case FileFault::NotFound: return end_code(0x4022);
-        case FileFault::Exists: return end_code(0x4028);
-        case FileFault::NotAFile: return kNotHandled;
-        case FileFault::NoCapacity: return end_code(0x4029);
-        case FileFault::WriteProtected: return end_code(0x4050);
-        case FileFault::ReadOnly: return end_code(0x4052);
-        case FileFault::Locked: return end_code(0x4025);
-        case FileFault::Password: return end_code(0x4026);
-        case FileFault::BadPointer: return EndCode::UnsupportedCommand;   // "outside the prescribed sequence" (JP §4.4)
-        case FileFault::NotWriteMode: return end_code(0x402C);
-        case FileFault::OutOfRange: return end_code(0x4027);
-        case FileFault::TooManyOpen: return end_code(0x4008);
-        case FileFault::HostError: return end_code(0x4051);
-    }
-    return EndCode::BadRequestContent;
+EndCode end_code_for(const PortProfile& port, FileFault fault) {
+    if (fault == FileFault::None) return EndCode::Ok;
+    return end_code(port.file_end_codes[static_cast<std::size_t>(fault)]);
 }
 
 bool ql_running(const CommandContext& ctx) {

@@ -38,11 +38,10 @@ void put_file_number(FieldWriter& out, const Dialect& d, std::uint32_t number);
 void put_entry(FieldWriter& out, const Dialect& d, const devicemodel::FileEntry& entry);
 std::size_t entry_bytes(const Dialect& d, const devicemodel::FileEntry& entry);   // as binary
 
-EndCode end_code_for(devicemodel::FileFault fault);
+// The end code the CPU's profile gives a refused file operation ("file_end_codes").
+EndCode end_code_for(const PortProfile& port, devicemodel::FileFault fault);
 
 // Q/L in RUN (§5): what a command may not touch unless the CPU is in STOP.
 bool ql_running(const CommandContext& ctx);
-constexpr EndCode kRunStateRefused = end_code(0x4013);   // chosen: "cannot be executed during RUN"
-constexpr EndCode kNotHandled = end_code(0x4024);        // chosen: "file cannot be handled" (names, project data)
 
 }  // namespace slmp::protocol::commands::files

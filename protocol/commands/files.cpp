@@ -30,8 +30,8 @@ EndCode not_served(const CommandContext& ctx) { return end_code(ctx.port.not_sup
 EndCode password_check(CommandContext& ctx, const Dialect& d, const FileRef& file, const std::string& given) {
     auto& drives = ctx.cpu.drives();
     if (d.subcommand == 0x0000 && ctx.cpu.profile().family == devicemodel::Family::L && drives.has_password(file, d.form))
-        return end_code_for(FileFault::Password);
-    return end_code_for(drives.check_password(file, d.form, given));
+        return end_code_for(ctx.port, FileFault::Password);
+    return end_code_for(ctx.port, drives.check_password(file, d.form, given));
 }
 
 // Q/L RUN (§5): parameter files anywhere and programs on drive 0 are frozen.
@@ -66,7 +66,7 @@ EndCode file_list(CommandContext& ctx) {
     if (!fixed || start == 0 || count == 0 || count > kMaxListCount) return EndCode::BadRequestContent;
     devicemodel::Listing listing;
     if (auto fault = ctx.cpu.drives().list(dir.drive, dir.path, d.form, start, count, listing); fault != FileFault::None)
-        return end_code_for(fault);
+        return end_code_for(ctx.port, fault);
     if (listing.past_end && d.long_form()) {
         ctx.out.u16(0xFFFF);   // §4.7: the end of the folder
         ctx.out.u32(listing.last_number);
@@ -94,9 +94,9 @@ EndCode file_search(CommandContext& ctx) {
     if (d.long_form() && given.find_first_not_of(std::string("0\0", 2)) != std::string::npos)
         return EndCode::BadRequestContent;
     if (!d.long_form())
-        if (auto code = end_code_for(ctx.cpu.drives().check_password(file, d.form, given)); code != EndCode::Ok) return code;
+        if (auto code = end_code_for(ctx.port, ctx.cpu.drives().check_password(file, d.form, given)); code != EndCode::Ok) return code;
     std::uint32_t number = 0;
-    if (auto fault = ctx.cpu.drives().find(file, d.form, number); fault != FileFault::None) return end_code_for(fault);
+    if (auto fault = ctx.cpu.drives().find(file, d.form, number); fault != FileFault::None) return end_code_for(ctx.port, fault);
     put_file_number(ctx.out, d, number);
     return EndCode::Ok;
 }
@@ -116,8 +116,8 @@ EndCode file_new(CommandContext& ctx) {
     if (d.long_form() && given.find_first_not_of(std::string("0\0", 2)) != std::string::npos)
         return EndCode::BadRequestContent;
     // §4.2: project data is created under another extension, then copied (Q/L).
-    if (!d.long_form() && DriveSet::project_data(file.path)) return kNotHandled;
-    return end_code_for(ctx.cpu.drives().create(file, d.form, size));
+    if (!d.long_form() && DriveSet::project_data(file.path)) return end_code_for(ctx.port, FileFault::BadName);
+    return end_code_for(ctx.port, ctx.cpu.drives().create(file, d.form, size));
 }
 
 // 1822 Delete File.
@@ -134,9 +134,9 @@ EndCode file_delete(CommandContext& ctx) {
     if (bad != EndCode::Ok) return bad;
     if (ql_running(ctx) && (DriveSet::program_file(file.path) || DriveSet::parameter_file(file.path) ||
                             DriveSet::boot_file(file.path)))
-        return kRunStateRefused;
+        return end_code_for(ctx.port, FileFault::RunState);
     if (auto code = password_check(ctx, d, file, given); code != EndCode::Ok) return code;
-    return end_code_for(ctx.cpu.drives().remove(file, d.form));
+    return end_code_for(ctx.port, ctx.cpu.drives().remove(file, d.form));
 }
 
 // 1824 Copy File: destination first, then source.
@@ -157,11 +157,11 @@ EndCode file_copy(CommandContext& ctx) {
     if (!in.finish()) return in.error();
     if (bad != EndCode::Ok || fixed != 0) return EndCode::BadRequestContent;
     // iQ-R: drive 0 (program memory) is neither source nor destination (§6.5).
-    if (d.long_form() && (to.drive == 0 || from.drive == 0)) return end_code_for(FileFault::NoDrive);
-    if (frozen_in_run(ctx, from) || frozen_in_run(ctx, to)) return kRunStateRefused;
+    if (d.long_form() && (to.drive == 0 || from.drive == 0)) return end_code_for(ctx.port, FileFault::NoDrive);
+    if (frozen_in_run(ctx, from) || frozen_in_run(ctx, to)) return end_code_for(ctx.port, FileFault::RunState);
     if (auto code = password_check(ctx, d, from, from_password); code != EndCode::Ok) return code;
     if (auto code = password_check(ctx, d, to, to_password); code != EndCode::Ok) return code;
-    return end_code_for(ctx.cpu.drives().copy(to, from, d.form));
+    return end_code_for(ctx.port, ctx.cpu.drives().copy(to, from, d.form));
 }
 
 // 1825 Change File State: 01H read-only, 20H read/write.
@@ -178,9 +178,9 @@ EndCode file_state(CommandContext& ctx) {
     if (!in.finish()) return in.error();
     // Other values "may not raise an error" but are system values: refused here (chosen).
     if (bad != EndCode::Ok || (attribute != 0x0001 && attribute != 0x0020)) return EndCode::BadRequestContent;
-    if (frozen_in_run(ctx, file)) return kRunStateRefused;
+    if (frozen_in_run(ctx, file)) return end_code_for(ctx.port, FileFault::RunState);
     if (auto code = password_check(ctx, d, file, given); code != EndCode::Ok) return code;
-    return end_code_for(ctx.cpu.drives().set_attribute(file, d.form, static_cast<std::uint8_t>(attribute)));
+    return end_code_for(ctx.port, ctx.cpu.drives().set_attribute(file, d.form, static_cast<std::uint8_t>(attribute)));
 }
 
 // 1826 Change File Date: date before time; no password, no lock.
@@ -197,8 +197,8 @@ EndCode file_date(CommandContext& ctx) {
     if (!in.finish()) return in.error();
     auto when = devicemodel::from_dos(date, time);
     if (!fixed || !when) return EndCode::BadRequestContent;
-    if (frozen_in_run(ctx, file)) return kRunStateRefused;
-    return end_code_for(ctx.cpu.drives().set_date(file, d.form, *when));
+    if (frozen_in_run(ctx, file)) return end_code_for(ctx.port, FileFault::RunState);
+    return end_code_for(ctx.port, ctx.cpu.drives().set_date(file, d.form, *when));
 }
 
 // 1827 Open File: a lock for reading (0000) or writing (0100); the pointer No.
@@ -217,8 +217,8 @@ EndCode file_open(CommandContext& ctx) {
     if (auto code = password_check(ctx, d, file, given); code != EndCode::Ok) return code;
     std::uint16_t pointer = 0;
     auto fault = ctx.cpu.drives().open(file, d.form, mode == 0x0100 ? OpenMode::Write : OpenMode::Read,
-                                       ctx.session.id, pointer);
-    if (fault != FileFault::None) return end_code_for(fault);
+                                       ctx.session.lock_owner(), pointer);
+    if (fault != FileFault::None) return end_code_for(ctx.port, fault);
     ctx.out.u16(pointer);
     return EndCode::Ok;
 }
@@ -234,8 +234,8 @@ EndCode file_read(CommandContext& ctx) {
     if (count > kMaxTransfer) return EndCode::ResponseTooLarge;
     if (offset % 2 != 0) return EndCode::BadRequestContent;
     std::vector<std::uint8_t> data;
-    if (auto fault = ctx.cpu.drives().read(pointer, ctx.session.id, offset, count, data); fault != FileFault::None)
-        return end_code_for(fault);
+    if (auto fault = ctx.cpu.drives().read(pointer, ctx.session.lock_owner(), offset, count, data); fault != FileFault::None)
+        return end_code_for(ctx.port, fault);
     ctx.out.u16(static_cast<std::uint16_t>(data.size()));
     for (auto byte : data) ctx.out.u8(byte);   // binary: the bytes; ASCII: two hex digits a byte (§10.12)
     return EndCode::Ok;
@@ -261,9 +261,9 @@ EndCode file_write(CommandContext& ctx) {
     const bool program_memory = open && open->drive == 0 && ctx.cpu.profile().family != devicemodel::Family::IQR;
     if (offset % (program_memory ? 4 : 2) != 0) return EndCode::BadRequestContent;
     if (open && !open->path.empty() && frozen_in_run(ctx, FileRef{open->drive, open->path.back()}))
-        return kRunStateRefused;
-    if (auto fault = drives.write(pointer, ctx.session.id, offset, data); fault != FileFault::None)
-        return end_code_for(fault);
+        return end_code_for(ctx.port, FileFault::RunState);
+    if (auto fault = drives.write(pointer, ctx.session.lock_owner(), offset, data); fault != FileFault::None)
+        return end_code_for(ctx.port, fault);
     ctx.out.u16(count);
     return EndCode::Ok;
 }
@@ -276,7 +276,7 @@ EndCode file_close(CommandContext& ctx) {
     auto type = in.u16("close type");
     if (!in.finish()) return in.error();
     if (type > 2) return EndCode::BadRequestContent;
-    return end_code_for(ctx.cpu.drives().close(pointer, ctx.session.id, type));
+    return end_code_for(ctx.port, ctx.cpu.drives().close(pointer, ctx.session.lock_owner(), type));
 }
 
 }  // namespace slmp::protocol::commands

@@ -54,6 +54,8 @@ public:
         return *reply;
     }
 
+    UdpClient& client() { return client_; }
+
 private:
     std::uint16_t port_;
     UdpClient client_;

@@ -55,3 +55,44 @@ TEST_CASE("slmp file put/ls/get/rm against the simulator, iQ-R and Q", "[cli][fi
     CHECK(run_cli(base + Args{"file", "rm", "2:RECIPE.BIN"}).exit_code == 1);
     CHECK(run_cli(base + Args{"file", "get", "2"}).exit_code == 2);
 }
+
+TEST_CASE("slmp file --file-password reaches a file with a password, iQ-R and Q", "[cli][files]") {
+    struct Case {
+        std::string profile, password, wrong;
+    };
+    auto c = GENERATE(Case{"R08CPU", "abcdef12", "abcdef13"}, Case{"Q06UDVCPU", "AB12", "AB13"});
+    INFO(c.profile);
+    TempDir data;
+    auto folder = data.path() / "plc";
+    fs::create_directories(folder);
+    const std::string content = "recipe 42\n";
+    std::ofstream(folder / "SECRET.BIN", std::ios::binary) << content;
+    SimOptions options;
+    options.args = {"--profile", c.profile};
+    options.config_json = R"({"drives": {"2": {"dir": ")" + folder.string() + R"(", "passwords": {"SECRET.BIN": ")" +
+                          c.password + R"("}}}})";
+    SimProcess sim(options);
+    auto base = target(sim.tcp_port());
+    auto back = (data.path() / "back.bin").string();
+
+    // Without the password, or with a wrong one: 4026, exit 1, nothing read.
+    auto refused = run_cli(base + Args{"file", "get", "2:SECRET.BIN", back});
+    CHECK(refused.exit_code == 1);
+    CHECK(refused.err.find("4026") != std::string::npos);
+    CHECK(run_cli(base + Args{"file", "get", "2:SECRET.BIN", back, "--file-password", c.wrong}).exit_code == 1);
+    CHECK_FALSE(fs::exists(back));
+
+    auto got = run_cli(base + Args{"file", "get", "2:SECRET.BIN", back, "--file-password", c.password});
+    INFO(got.err);
+    REQUIRE(got.exit_code == 0);
+    CHECK(slurp(back) == content);
+
+    // A password no dialect carries is a usage error, sent nowhere.
+    CHECK(run_cli(base + Args{"file", "rm", "2:SECRET.BIN", "--file-password", "abcde"}).exit_code == 2);
+    CHECK(run_cli(base + Args{"file", "rm", "2:SECRET.BIN", "--file-password", c.wrong}).exit_code == 1);
+    CHECK(fs::exists(folder / "SECRET.BIN"));
+    REQUIRE(run_cli(base + Args{"file", "rm", "2:SECRET.BIN", "--file-password", c.password}).exit_code == 0);
+    CHECK_FALSE(fs::exists(folder / "SECRET.BIN"));
+    // --file-password belongs to file only.
+    CHECK(run_cli(base + Args{"read", "D0", "--file-password", c.password}).exit_code == 2);
+}

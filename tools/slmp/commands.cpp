@@ -20,7 +20,8 @@ const CommandSpec kCommands[] = {
     {"label", "read|write NAME...", "041C/041A label read: LabelW DDD[0]:20; 141B/141A label write: LabelW 5, "
                                     "DDD[0] 1 2 3 (docs/labels.md)", {}, run_label},
     {"file", "ls|get|put|rm ...", "file drives (1810-182A): ls [4:[DIR]], get 4:A.CSV [LOCAL], put LOCAL 4:A.CSV, "
-                                  "rm 4:A.CSV (docs/files.md)", {}, run_file},
+                                  "rm 4:A.CSV; --file-password P for a file with one (docs/files.md)",
+                                  {"file-password"}, run_file},
     {"run", "", "1001 Remote RUN (--force: mode 0003; --clear none|nonlatch|all)", {"force", "clear"}, run_remote_run},
     {"stop", "", "1002 Remote STOP", {}, run_remote_stop},
     {"pause", "", "1003 Remote PAUSE (--force: mode 0003)", {"force"}, run_remote_pause},

@@ -4,6 +4,9 @@
 //   slmp file get DRIVE:PATH [LOCAL]     1827 read, 1828 in 1920-byte pieces, 182A
 //   slmp file put LOCAL DRIVE:PATH       1820, 1827 write, 1829 pieces, 182A
 //   slmp file rm DRIVE:PATH              1822
+// --file-password P fills the commands' file password field (1811/1820 carry
+// it on Q/L only; 1810 has none): 4 characters space-padded in 0000, a length
+// and 6-32 characters in 0040.
 // The dialect is found by asking: 0040 (iQ-R) first, 0000 (Q/L) when the CPU
 // answers C059, as a tool facing an unknown CPU would.
 #include <fstream>
@@ -19,13 +22,20 @@ namespace {
 
 namespace client = protocol::client;
 constexpr std::size_t kPiece = 1920;
+constexpr std::size_t kQlPassword = 4, kIqrPasswordMin = 6, kIqrPasswordMax = 32;   // slmp-files.md §3.1
+
+bool fits(const std::string& password, bool iqr) {
+    if (password.empty()) return true;
+    return iqr ? password.size() >= kIqrPasswordMin && password.size() <= kIqrPasswordMax : password.size() <= kQlPassword;
+}
 
 // "4:LOGS\A.CSV" -> drive 4, path "LOGS\A.CSV"; "/" is taken as "\".
-client::FileTarget target(const std::string& text, bool need_name) {
+client::FileTarget target(const std::string& text, bool need_name, const std::string& password = {}) {
     auto colon = text.find(':');
     if (colon == std::string::npos || colon == 0 || text.find_first_not_of("0123456789") < colon)
         throw UsageError("'" + text + "': write DRIVE:PATH, e.g. 4:LOGS\\A.CSV");
     client::FileTarget t;
+    t.password = password;
     t.drive = static_cast<std::uint16_t>(std::stoi(text.substr(0, colon)));
     t.name = text.substr(colon + 1);
     for (auto& c : t.name)
@@ -34,14 +44,21 @@ client::FileTarget target(const std::string& text, bool need_name) {
     return t;
 }
 
-// Runs `request(iqr)` in the iQ-R dialect, falling back to Q/L on C059.
+// Runs `request(iqr)` in the iQ-R dialect, falling back to Q/L on C059. A
+// password only one dialect can carry picks that dialect; one neither can
+// carry is refused before anything is sent.
 template <typename Build>
 client::Response ask(Invocation& in, client::FileTarget& t, Build build) {
-    try {
-        t.iqr = true;
-        return in.client.exchange(build(t));
-    } catch (const EndCodeError& e) {
-        if (e.end_code != 0xC059) throw;
+    if (!fits(t.password, true) && !fits(t.password, false))
+        throw UsageError("--file-password: a file password has up to 4 characters (Q/L) or 6-32 (iQ-R), not " +
+                         std::to_string(t.password.size()));
+    if (fits(t.password, true)) {
+        try {
+            t.iqr = true;
+            return in.client.exchange(build(t));
+        } catch (const EndCodeError& e) {
+            if (e.end_code != 0xC059 || !fits(t.password, false)) throw;
+        }
     }
     t.iqr = false;
     return in.client.exchange(build(t));
@@ -80,7 +97,7 @@ void file_ls(Invocation& in, const std::vector<std::string>& args) {
 
 void file_get(Invocation& in, const std::vector<std::string>& args) {
     if (args.empty()) throw UsageError("file get needs DRIVE:PATH [LOCAL], e.g. slmp file get 4:A.CSV a.csv");
-    auto t = target(args[0], true);
+    auto t = target(args[0], true, in.options.file_password);
     auto local = args.size() > 1 ? args[1] : t.name.substr(t.name.rfind('\\') + 1);
     auto opened = ask(in, t, [&](const client::FileTarget& x) { return client::file_open(in.client.frame(), x, false); });
     auto pointer = client::parse_file_pointer(opened);
@@ -105,7 +122,7 @@ void file_put(Invocation& in, const std::vector<std::string>& args) {
     std::ifstream file(args[0], std::ios::binary);
     if (!file) throw UsageError("cannot read " + args[0]);
     std::vector<std::uint8_t> content((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    auto t = target(args[1], true);
+    auto t = target(args[1], true, in.options.file_password);
     ask(in, t, [&](const client::FileTarget& x) {
         return client::file_new(in.client.frame(), x, static_cast<std::uint32_t>(content.size()));
     });
@@ -123,7 +140,7 @@ void file_put(Invocation& in, const std::vector<std::string>& args) {
 
 void file_rm(Invocation& in, const std::vector<std::string>& args) {
     if (args.size() != 1) throw UsageError("file rm needs DRIVE:PATH, e.g. slmp file rm 4:A.CSV");
-    auto t = target(args[0], true);
+    auto t = target(args[0], true, in.options.file_password);
     ask(in, t, [&](const client::FileTarget& x) { return client::file_delete(in.client.frame(), x); });
     in.output.result(Json{{"file", args[0]}, {"deleted", true}}, "deleted " + args[0]);
 }

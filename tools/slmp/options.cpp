@@ -100,7 +100,8 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         ("count", po::value(&count), "monitor: stop after this many polls (default: until Ctrl-C)")
         ("wait", po::bool_switch(&o.wait), "ondemand: wait for Ondemand (2101) pushes and print each (--count N, default 1)")
         ("force", po::bool_switch(&o.force), "run/pause: mode 0003, even if another client holds STOP/PAUSE")
-        ("clear", po::value(&o.clear), "run: clear devices first: none (default), nonlatch, all");
+        ("clear", po::value(&o.clear), "run: clear devices first: none (default), nonlatch, all")
+        ("file-password", po::value(&o.file_password), "file: the file's password (Q/L: up to 4 characters, iQ-R: 6-32)");
     po::options_description hidden;
     hidden.add_options()
         ("command", po::value(&o.command))

@@ -33,6 +33,7 @@ struct Options {
     bool wait = false;                      // ondemand
     bool force = false;                     // run, pause
     std::string clear = "none";             // run
+    std::string file_password;              // file: the file's password (empty: none)
     std::vector<std::string> given;         // names of the subcommand options actually given
 };
 
