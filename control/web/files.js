@@ -153,7 +153,7 @@ async function startFiles() {
   section.className = 'files';
   section.id = 'files-section';
   section.innerHTML = FILES_MARKUP;   // static markup; every value below goes in as text
-  $('main').append(section);
+  $('#station-view').append(section);
   $('#files-up').addEventListener('click', () => {
     const parts = filesState.path.split('\\');
     parts.pop();
