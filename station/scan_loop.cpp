@@ -74,31 +74,6 @@ private:
 
 }  // namespace
 
-asio::awaitable<void> ScanLoop::until_scan_after(std::uint64_t seen) {
-    asio::steady_timer timer(timer_.get_executor());
-    WaiterGuard guard(waiters_, timer);
-    while (scans_ <= seen && !stopped_) {
-        timer.expires_at(std::chrono::steady_clock::time_point::max());   // the next scan cancels it
-        boost::system::error_code ec;
-        co_await timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
-    }
-}
-
-asio::awaitable<void> ScanLoop::until(VirtualClock::TimePoint at) {
-    asio::steady_timer timer(timer_.get_executor());
-    WaiterGuard guard(waiters_, timer);
-    while (!stopped_) {
-        const auto now = clock_.now();
-        if (now >= at) break;
-        if (clock_.frozen())
-            timer.expires_at(std::chrono::steady_clock::time_point::max());   // a step or run_clock() cancels it
-        else
-            timer.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>((at - now) / clock_.speed()));
-        boost::system::error_code ec;
-        co_await timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
-    }
-}
-
 asio::awaitable<void> ScanLoop::until_end_or(std::optional<std::uint64_t> seen, std::optional<VirtualClock::TimePoint> at) {
     asio::steady_timer timer(timer_.get_executor());
     WaiterGuard guard(waiters_, timer);

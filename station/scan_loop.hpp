@@ -46,14 +46,11 @@ public:
     // A restored snapshot's CPU time (the mode stays).
     void set_time(VirtualClock::TimePoint cpu_time);
 
-    // Answers held for the clock (docs/timing.md). until_scan_after() returns
-    // once the scan after the `seen`-th has ended (its END processing),
-    // until() once CPU time has reached `at`; while the clock is frozen both
-    // hold until it is stepped or runs again. Any number may wait at once.
+    // Requests held for the clock (docs/timing.md): until_end_or() below; while
+    // the clock is frozen it holds until the clock is stepped or runs again.
+    // Any number may wait at once.
     std::uint64_t scans() const { return scans_; }
     VirtualClock::TimePoint last_end() const { return last_end_; }   // CPU time of the last END (start: the clock's origin)
-    boost::asio::awaitable<void> until_scan_after(std::uint64_t seen);
-    boost::asio::awaitable<void> until(VirtualClock::TimePoint at);
     // Returns at whichever comes first: the END of the scan after the
     // `seen`-th (none: no END ends the wait), CPU time `at` (none: no time
     // limit), or a nudge().
