@@ -212,7 +212,7 @@ TEST_CASE("scenario faults on host-link records: a chosen code, a delay, no answ
     // The forced code is answered and nothing is written.
     CHECK(ask(client, record("@00WD01000001")) == record("@00WD15"));
     CHECK(ask(client, record("@00RD01000001")) == record("@00RD000000"));
-    CHECK(http_get(sim.http_port(), "/api/devices/D100").json()["values"] == json({0}));
+    CHECK(http_get(sim.http_port(), "/api/devices/D100").json()["values"] == json::array({0}));
 
     auto start = std::chrono::steady_clock::now();
     CHECK(ask(client, record("@00RR00000001")) == record("@00RR000000"));
