@@ -31,11 +31,20 @@ struct ConfigError : std::runtime_error {
 std::vector<std::string> builtin_profile_names();
 // One profile file: the CPU's own facts and what its SLMP port answers. A
 // CPU model is still one file; the device model never sees the port's half.
+// A behaviour where the manuals and real CPUs differ, and which of the two the
+// profile follows (profile "manual_vs_hardware", docs/compatibility.md).
+struct ManualVsHardware {
+    std::string what;       // "1406 with word and bit blocks"
+    std::string manual;     // what the manuals say
+    std::string hardware;   // what a real CPU was seen to do
+    bool follows_hardware = true;
+};
 struct Profile {
     devicemodel::CpuProfile cpu;
     protocol::PortProfile port;
     TimingModel timing;        // the response-time model's constants (docs/timing.md)
     std::string description;   // one line, for --list-profiles
+    std::vector<ManualVsHardware> manual_vs_hardware;
 };
 // "iQ-R", "QnU", "L", "QJ71E71", "iQ-F": as profiles, logs and the API write it.
 std::string_view family_name(devicemodel::Family family);
@@ -62,7 +71,8 @@ struct PortConfig {
     Transport transport = Transport::Tcp;
     std::uint16_t port = 5000;             // 0: any free port (see ready_file)
     DataCode data_code = DataCode::Auto;
-    unsigned max_connections = 64;         // TCP: 1 reproduces an iQ-R built-in port
+    // TCP clients at once; unset: the profile's "max_connections" (docs/configuration.md).
+    std::optional<unsigned> max_connections = std::nullopt;
     unsigned idle_timeout_ms = 300000;     // TCP: close a silent connection; 0 = never
     // TCP: close a connection whose started frame is not whole this long after
     // its first byte, so half-frames cannot hold a connection slot; 0 = never.

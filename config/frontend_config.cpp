@@ -48,7 +48,7 @@ void parse_hostlink(const JsonAt& at, HostLinkConfig& h) {
     if (at.has("tcp_port")) h.port.port = static_cast<std::uint16_t>(at["tcp_port"].unsigned_int(65535));
     if (at.has("max_connections")) {
         h.port.max_connections = static_cast<unsigned>(at["max_connections"].unsigned_int(4096));
-        if (h.port.max_connections == 0) at["max_connections"].fail("must be at least 1", "use e.g. 8");
+        if (*h.port.max_connections == 0) at["max_connections"].fail("must be at least 1", "use e.g. 8");
     }
     if (at.has("idle_timeout_ms")) h.port.idle_timeout_ms = static_cast<unsigned>(at["idle_timeout_ms"].unsigned_int(86400000));
     if (at.has("partial_frame_timeout_ms"))
@@ -79,7 +79,7 @@ void parse_jw51cm(const JsonAt& at, Jw51cmConfig& j) {
     if (j.tcp) {
         if (at.has("max_connections")) {
             j.tcp->max_connections = static_cast<unsigned>(at["max_connections"].unsigned_int(8));
-            if (j.tcp->max_connections == 0) at["max_connections"].fail("must be 1-8", "the unit has 8 connections; use 1-8");
+            if (*j.tcp->max_connections == 0) at["max_connections"].fail("must be 1-8", "the unit has 8 connections; use 1-8");
         }
         if (at.has("idle_timeout_ms")) j.tcp->idle_timeout_ms = static_cast<unsigned>(at["idle_timeout_ms"].unsigned_int(86400000));
         if (at.has("partial_frame_timeout_ms"))

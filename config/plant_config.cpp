@@ -2,10 +2,13 @@
 #include "config/plant_config.hpp"
 
 #include <cctype>
+#include <fstream>
 #include <map>
+#include <set>
 
 #include "config/config_parts.hpp"
 #include "config/json_path.hpp"
+#include "config/station_pattern.hpp"
 
 namespace slmp::config {
 
@@ -220,8 +223,36 @@ std::string expand_placeholders(const std::string& text, long i, const std::stri
     return out;
 }
 
+namespace {
+
+// A scenario file that names its "stations" must name some station of the
+// plant: a typo would otherwise leave it silently unused.
+void check_scenario_stations(const PlantConfig& plant) {
+    std::set<std::string> files;
+    for (const auto& station : plant.stations) files.insert(station.server.scenarios.begin(), station.server.scenarios.end());
+    for (const auto& file : files) {
+        std::ifstream in(file);
+        if (!in) continue;   // the station reports a missing file when it loads it
+        auto json = nlohmann::json::parse(in, nullptr, false);
+        if (!json.is_object() || !json.contains("stations")) continue;
+        JsonAt at(json, file);
+        std::vector<std::string> patterns;
+        if (json["stations"].is_string()) patterns.push_back(at["stations"].string());
+        else if (json["stations"].is_array())
+            for (std::size_t i = 0; i < json["stations"].size(); ++i) patterns.push_back(at["stations"][i].string());
+        bool used = false;
+        for (const auto& station : plant.stations)
+            used = used || station_patterns_match(patterns, station.server.name);
+        if (!used)
+            at["stations"].fail("no station of the plant is named " + json["stations"].dump(),
+                                "write a station name or pattern of the configuration, e.g. \"press-*\"");
+    }
+}
+
+}  // namespace
+
 PlantConfig parse_plant_config(const std::string& json_text, const std::string& source,
-                               const std::filesystem::path& directory) {
+                               const std::filesystem::path& directory, const std::string& profile) {
     auto json = parse_json(json_text, source);
     JsonAt root(json, source);
     root.expect_object();
@@ -230,6 +261,7 @@ PlantConfig parse_plant_config(const std::string& json_text, const std::string& 
     if (!root.has("stations")) {
         auto body = json;
         body.erase("threads");
+        if (!profile.empty()) body["profile"] = profile;
         JsonAt at(body, source);
         plant.stations.push_back({parse_server_config(at, directory), parse_frontends_config(at)});
         if (plant.stations.back().frontends.kind != StationKind::Melsec) plant.stations.back().server.ports.clear();
@@ -267,11 +299,12 @@ PlantConfig parse_plant_config(const std::string& json_text, const std::string& 
         }
     }
     plant.stations = reader.take();
+    check_scenario_stations(plant);
     return plant;
 }
 
-PlantConfig load_plant_config(const std::filesystem::path& file) {
-    return parse_plant_config(read_config_file(file), file.string(), file.parent_path());
+PlantConfig load_plant_config(const std::filesystem::path& file, const std::string& profile) {
+    return parse_plant_config(read_config_file(file), file.string(), file.parent_path(), profile);
 }
 
 }  // namespace slmp::config

@@ -28,10 +28,12 @@ struct PlantConfig {
 };
 
 // A file with or without "stations". Throws ConfigError naming the file, the
-// station, the key and the fix.
-PlantConfig load_plant_config(const std::filesystem::path& file);
+// station, the key and the fix. `profile`: --profile, which replaces a
+// one-station file's "profile" before its addresses are read (an FX5 reads
+// X/Y in octal).
+PlantConfig load_plant_config(const std::filesystem::path& file, const std::string& profile = {});
 PlantConfig parse_plant_config(const std::string& json_text, const std::string& source,
-                               const std::filesystem::path& directory);
+                               const std::filesystem::path& directory, const std::string& profile = {});
 
 // The placeholders of a template's strings, for station i: "{i}", "{i:03}"
 // (zero-padded to 3 digits), "{i+100}", "{2*i+1}". Throws ConfigError (with

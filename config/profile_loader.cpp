@@ -85,9 +85,9 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
     JsonAt root(json, source);
     root.only_keys({"name", "description", "type_name", "model_code", "family", "frame_4e", "iqr_subcommands",
                     "unsupported_commands", "end_codes", "limits", "device_sizes", "start_only_range_check",
-                    "read_only_devices", "size_registers", "zr_ascii_hex", "mixed_block_write",
-                    "station_buffer_words", "remote_password_length", "online_change", "frame_1e",
-                    "station_extended_frame", "pipeline", "timing", "file_drives", "file_end_codes"});
+                    "read_only_devices", "size_registers", "zr_ascii_hex", "xy_radix", "mixed_block_write",
+                    "station_buffer_words", "remote_password_length", "online_change", "max_connections",
+                    "manual_vs_hardware", "frame_1e", "station_extended_frame", "pipeline", "timing", "file_drives", "file_end_codes"});
     Profile profile;
     auto& p = profile.cpu;
     auto& port = profile.port;
@@ -137,6 +137,25 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
     if (codes.has("online_change_refused")) port.online_change_code = codes["online_change_refused"].hex_code();
     if (codes.has("system_protect")) port.system_protect_code = codes["system_protect"].hex_code();
     if (root.has("online_change")) port.online_change = root["online_change"].boolean();
+    if (root.has("manual_vs_hardware")) {
+        // Keyed by topic, so a profile that extends another changes one entry.
+        auto differences = root["manual_vs_hardware"];
+        differences.expect_object();
+        for (const auto& [topic, _] : differences.json().items()) {
+            auto d = differences[topic];
+            d.only_keys({"what", "manual", "hardware", "follows"});
+            auto follows = d["follows"].string();
+            if (follows != "manual" && follows != "hardware")
+                d["follows"].fail("must be \"manual\" or \"hardware\"", "say which of the two the profile does");
+            profile.manual_vs_hardware.push_back({d["what"].string(), d["manual"].string(), d["hardware"].string(),
+                                                  follows == "hardware"});
+        }
+    }
+    if (root.has("max_connections")) {
+        port.max_connections = static_cast<unsigned>(root["max_connections"].unsigned_int(4096));
+        if (port.max_connections == 0)
+            root["max_connections"].fail("must be at least 1", "write the CPU's connection count, e.g. 16");
+    }
 
     auto limits = root["limits"];
     limits.only_keys({"batch_words", "batch_bits_binary", "batch_bits_ascii", "loopback_bytes", "random_read_points",
@@ -180,6 +199,11 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
         p.size_registers.push_back({area(reg["device"]), sd, static_cast<std::uint8_t>(bits)});
     }
     port.zr_ascii_hex = root["zr_ascii_hex"].boolean();
+    if (root.has("xy_radix")) {
+        auto radix = root["xy_radix"].unsigned_int(16);
+        if (radix != 8 && radix != 16) root["xy_radix"].fail("must be 8 or 16", "write 8 (iQ-F: X0-X7, X10) or 16 (iQ-R, Q, L)");
+        p.numbering.xy = static_cast<devicemodel::Radix>(radix);
+    }
     if (root.has("remote_password_length")) {
         // [min, max] characters, e.g. [4, 4] for Q/L, [6, 32] for iQ-R.
         auto rule = root["remote_password_length"];

@@ -1,6 +1,7 @@
 // The server configuration file. Keys and defaults: docs/configuration.md.
 #include <cctype>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "config/config.hpp"
@@ -28,7 +29,7 @@ PortConfig port(const JsonAt& at) {
     if (at.has("data_code")) p.data_code = parse_data_code(at["data_code"].string(), at["data_code"].pointer());
     if (at.has("max_connections")) {
         p.max_connections = static_cast<unsigned>(at["max_connections"].unsigned_int(4096));
-        if (p.max_connections == 0) at["max_connections"].fail("must be at least 1", "use 1 to reproduce an iQ-R built-in port");
+        if (*p.max_connections == 0) at["max_connections"].fail("must be at least 1", "use 1 to reproduce an iQ-R built-in port");
     }
     if (at.has("idle_timeout_ms")) p.idle_timeout_ms = static_cast<unsigned>(at["idle_timeout_ms"].unsigned_int(86400000));
     if (at.has("partial_frame_timeout_ms"))
@@ -144,6 +145,10 @@ ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path
     ServerConfig c;
     if (root.has("name")) c.name = checked_station_name(root["name"]);
     if (root.has("profile")) c.profile = root["profile"].string();
+    // The file's addresses follow its CPU's numbering (FX5: X/Y in octal).
+    std::optional<devicemodel::NumberingScope> numbering;
+    if (root.has("devices") || root.has("labels") || root.has("cpu"))
+        numbering.emplace(load_profile(c.profile).cpu.numbering);
     if (root.has("bind")) c.bind = root["bind"].string();
     if (root.has("ports")) {
         auto ports = root["ports"];

@@ -34,7 +34,7 @@ json connection_json(const station::Connection& connection) {
                 {"requests", connection.requests}};
 }
 
-json request_json(const station::RequestRecord& record) {
+json request_json(const station::RequestRecord& record, devicemodel::Numbering numbering) {
     const auto& outcome = record.outcome;
     // A frame rejected before its command was read (garbage, a refused 4E
     // header, an oversized length) has command and subcommand 0.
@@ -55,7 +55,7 @@ json request_json(const station::RequestRecord& record) {
              {"bytes_out", outcome.response.size()},
              {"note", outcome.note}};
     if (!outcome.named.empty()) out["named"] = outcome.named;   // label names (the devices column of a label request)
-    if (auto devices = decoded ? request_devices(record.request) : std::nullopt) {
+    if (auto devices = decoded ? request_devices(record.request, numbering) : std::nullopt) {
         out["device"] = devices->device;
         out["points"] = devices->points;
         out["unit"] = devices->unit;

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "devicemodel/device_table.hpp"
 #include "station/activity.hpp"
 
 namespace slmp::control {
@@ -14,7 +15,8 @@ nlohmann::json connection_json(const station::Connection& connection);
 // {"time", "connection", "transport", "peer", "command", "subcommand", "name",
 //  "device", "points", "unit", "end_code", "reaction", "latency_us",
 //  "bytes_in", "bytes_out", "note"} — docs/api.md, "request" events.
-nlohmann::json request_json(const station::RequestRecord& record);
+// `numbering`: the station CPU's (FX5: X/Y head devices in octal).
+nlohmann::json request_json(const station::RequestRecord& record, devicemodel::Numbering numbering);
 
 // A front end's request in the same shape: "protocol" "hostlink"/"jw51cm",
 // "command" its text ("RD", "24"), "subcommand" null, "end_code" the response

@@ -24,7 +24,7 @@ NamedDevice parse_station_device(const station::Station& station, const std::str
         if (auto cell = jw51cm::resolve_name(frontends.jw51cm->map(), text, &error)) return {*cell, std::nullopt};
         if (!error.empty()) throw ApiError{Status::bad_request, error};
     }
-    return {parse_device(text), std::nullopt};
+    return {parse_device(text, station.cpu().profile().numbering), std::nullopt};
 }
 
 }  // namespace slmp::control

@@ -103,9 +103,9 @@ View default_view(const DeviceSpec& spec) {
     return spec.unit == Unit::Word ? View::Words : View::Dwords;
 }
 
-DeviceAddress parse_device(const std::string& text) {
+DeviceAddress parse_device(const std::string& text, devicemodel::Numbering numbering) {
     std::string error;
-    auto address = devicemodel::parse_address(text, &error);
+    auto address = devicemodel::parse_address(text, numbering, &error);
     if (!address) bad(error);
     if (address->spec->extension_only)
         bad(symbol(*address->spec) + " (" + std::string(address->spec->name) +
@@ -115,7 +115,7 @@ DeviceAddress parse_device(const std::string& text) {
 
 DeviceRun make_run(const devicemodel::Cpu& cpu, DeviceAddress start, View view, std::uint64_t count) {
     auto area = std::string(devicemodel::area_name(start.spec->area));
-    return make_run(cpu.memory(), RunPlace{cpu.profile().name, "raise device_sizes." + area + " in the configuration"},
+    return make_run(cpu.memory(), RunPlace{cpu.profile().name, "raise device_sizes." + area + " in the configuration", cpu.profile().numbering},
                     start, view, count);
 }
 
@@ -126,13 +126,14 @@ DeviceRun make_run(const devicemodel::DeviceMemory& memory, const RunPlace& plac
     if (count == 0 || count > kMaxValues)
         bad("count " + std::to_string(count) + " is out of range; use 1 to " + std::to_string(kMaxValues) +
             " (read larger spans in parts)");
-    DeviceRun run{start, view, static_cast<std::uint32_t>(count), devices_spanned(spec, view, count)};
+    DeviceRun run{start, view, static_cast<std::uint32_t>(count), devices_spanned(spec, view, count), place.numbering};
 
     auto size = memory.size(spec.area);
     if (!memory.contains(spec.area, start.number, run.devices)) {
         if (size == 0) bad(symbol(spec) + " has no devices in " + place.name + " (size 0); " + place.enlarge);
-        bad(devicemodel::format_address(start) + " with " + std::to_string(count) + " " + std::string(to_string(view)) +
-            " runs past " + devicemodel::format_address(DeviceAddress{&spec, size - 1}) + ", the last " + symbol(spec) +
+        bad(devicemodel::format_address(start, place.numbering) + " with " + std::to_string(count) + " " +
+            std::string(to_string(view)) + " runs past " +
+            devicemodel::format_address(DeviceAddress{&spec, size - 1}, place.numbering) + ", the last " + symbol(spec) +
             " device of " + place.name + " (" + std::to_string(size) + " devices); lower the start or count, or " +
             place.enlarge);
     }
@@ -141,7 +142,7 @@ DeviceRun make_run(const devicemodel::DeviceMemory& memory, const RunPlace& plac
 
 json read_run(const devicemodel::DeviceMemory& memory, const DeviceRun& run) {
     const auto& spec = *run.start.spec;
-    json out{{"device", devicemodel::format_address(run.start)}, {"as", to_string(run.view)}, {"count", run.count}};
+    json out{{"device", devicemodel::format_address(run.start, run.numbering)}, {"as", to_string(run.view)}, {"count", run.count}};
     auto values = json::array();
     switch (run.view) {
         case View::Bits:

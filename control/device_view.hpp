@@ -38,9 +38,10 @@ struct DeviceRun {
     View view = View::Words;
     std::uint32_t count = 1;      // values (string: words)
     std::uint64_t devices = 1;    // devices spanned
+    devicemodel::Numbering numbering;   // how its addresses are written (FX5: X/Y in octal)
 };
 
-devicemodel::DeviceAddress parse_device(const std::string& text);
+devicemodel::DeviceAddress parse_device(const std::string& text, devicemodel::Numbering numbering = {});
 DeviceRun make_run(const devicemodel::Cpu& cpu, devicemodel::DeviceAddress start, View view, std::uint64_t count);
 
 // Where a run lives, for its out-of-range messages: the owner's name
@@ -48,6 +49,7 @@ DeviceRun make_run(const devicemodel::Cpu& cpu, devicemodel::DeviceAddress start
 struct RunPlace {
     std::string name;
     std::string enlarge;   // "raise device_sizes.D in the configuration"
+    devicemodel::Numbering numbering = {};
 };
 DeviceRun make_run(const devicemodel::DeviceMemory& memory, const RunPlace& place, devicemodel::DeviceAddress start,
                    View view, std::uint64_t count);

@@ -126,7 +126,7 @@ void EventHub::flush_writes(std::string_view source, const protocol::Peer* peer,
         auto values = json::array();
         for (std::uint32_t i = 0; i < shown; ++i) values.push_back(memory.value(*run.spec, run.first + i));
         json data{{"time", time},
-                  {"device", devicemodel::format_address({run.spec, run.first})},
+                  {"device", devicemodel::format_address({run.spec, run.first}, station_.cpu().profile().numbering)},
                   {"count", run.count},
                   {"values", std::move(values)},
                   {"source", source}};
@@ -140,7 +140,7 @@ void EventHub::flush_writes(std::string_view source, const protocol::Peer* peer,
 }
 
 void EventHub::on_request(const station::RequestRecord& record) {
-    if (wanted(kRequestEvents)) publish(kRequestEvents, "request", request_json(record));
+    if (wanted(kRequestEvents)) publish(kRequestEvents, "request", request_json(record, station_.cpu().profile().numbering));
     flush_writes("slmp", &record.peer, record.connection);
 }
 

@@ -45,7 +45,7 @@ Reply info(Api& api) {
                            {"unit", spec.unit == devicemodel::Unit::Bit    ? "bit"
                                     : spec.unit == devicemodel::Unit::Word ? "word"
                                                                            : "dword"},
-                           {"radix", static_cast<int>(spec.radix)},
+                           {"radix", static_cast<int>(devicemodel::radix_of(spec, profile.numbering))},
                            {"name", spec.name}});
     }
     return json_reply(json{

@@ -21,10 +21,10 @@ namespace {
 
 [[noreturn]] void bad(const std::string& message) { throw ApiError{Status::bad_request, message}; }
 
-json label_json(const devicemodel::Label& l) {
+json label_json(const devicemodel::Label& l, devicemodel::Numbering numbering) {
     return {{"name", l.name},
             {"type", devicemodel::format_label_type(l.type, l.dims)},
-            {"device", l.device ? json(devicemodel::format_address(*l.device)) : json(nullptr)},
+            {"device", l.device ? json(devicemodel::format_address(*l.device, numbering)) : json(nullptr)},
             {"external", l.external},
             {"words", l.words}};
 }
@@ -32,7 +32,7 @@ json label_json(const devicemodel::Label& l) {
 Reply list_labels(Api& api) {
     const auto& table = api.station.cpu().labels();
     json labels = json::array(), structures = json::array();
-    for (const auto& l : table.labels()) labels.push_back(label_json(l));
+    for (const auto& l : table.labels()) labels.push_back(label_json(l, api.station.cpu().profile().numbering));
     for (const auto& s : table.structures()) {
         json members = json::array();
         for (const auto& m : s.members)

@@ -29,6 +29,7 @@ Reply ondemand(Api& api, const ApiRequest& request) {
         else fail(Status::bad_request, "\"to\" must be \"all\", \"tcp\", \"udp\" or a TCP connection id");
     }
     std::string error;
+    devicemodel::NumberingScope numbering(api.station.cpu().profile().numbering);   // FX5: X/Y in octal
     auto action = scenarios::parse_ondemand(body["data"].get<std::string>(), to, &error);
     if (!action) fail(Status::bad_request, "\"data\": " + error + "; write a device range such as \"D100-D109\" (at most 960 words)");
     std::vector<station::Station::Pushed> sent;

@@ -1,6 +1,7 @@
 // The plant's own endpoints (docs/plants.md): health, the station list, and
 // one /metrics for every station. Each station is read on its own thread.
 #include "config/config.hpp"
+#include "config/station_pattern.hpp"
 #include "control/station_side.hpp"
 
 namespace slmp::control {
@@ -17,6 +18,7 @@ json summary(StationSide& side) {
             {"profile", profile.name},
             {"type_name", profile.type_name},
             {"family", config::family_name(profile.family)},
+            {"xy_radix", static_cast<int>(profile.numbering.xy)},
             {"state", run_state_name(side.station.cpu().runtime().operating_state().state())},
             {"bind", side.api.ports.bind},
             {"tcp", side.api.ports.tcp},
@@ -32,24 +34,15 @@ Reply deferred(std::function<boost::asio::awaitable<Reply>()> later) {
     return reply;
 }
 
-// "press-*", "*-7", "press-1": '*' stands for any run of characters.
-bool glob_match(std::string_view pattern, std::string_view name) {
-    auto star = pattern.find('*');
-    if (star == std::string_view::npos) return pattern == name;
-    auto head = pattern.substr(0, star);
-    if (name.substr(0, head.size()) != head) return false;
-    auto rest = pattern.substr(star + 1);
-    for (auto from = head.size(); from <= name.size(); ++from)
-        if (glob_match(rest, name.substr(from))) return true;
-    return false;
-}
-
-// The stations a group request names: "stations": "press-*" or a list of names and patterns.
+// The stations a group request names: "stations": "press-*" or a list of
+// names and patterns; without it, the scenario's own "stations".
 std::vector<StationSide*> group(Plant& plant, const json& body) {
-    if (!body.is_object() || !body.contains("stations") || !body.contains("scenario") || !body["scenario"].is_object())
-        throw ApiError{Status::bad_request, "send {\"stations\": \"press-*\" (or a list of names), \"scenario\": {...}}"};
+    const bool scenario = body.is_object() && body.contains("scenario") && body["scenario"].is_object();
+    if (!scenario || !(body.contains("stations") || body["scenario"].contains("stations")))
+        throw ApiError{Status::bad_request, "send {\"stations\": \"press-*\" (or a list of names), \"scenario\": {...}}, "
+                                            "or a scenario that names its \"stations\""};
     std::vector<std::string> patterns;
-    const auto& stations = body["stations"];
+    const auto& stations = body.contains("stations") ? body["stations"] : body["scenario"]["stations"];
     if (stations.is_string()) patterns.push_back(stations.get<std::string>());
     else if (stations.is_array())
         for (const auto& item : stations)
@@ -58,11 +51,7 @@ std::vector<StationSide*> group(Plant& plant, const json& body) {
         throw ApiError{Status::bad_request, "\"stations\": give a name, a pattern such as \"press-*\", or a list of them"};
     std::vector<StationSide*> chosen;
     for (auto& side : plant.stations)
-        for (const auto& pattern : patterns)
-            if (glob_match(pattern, side->name)) {
-                chosen.push_back(side.get());
-                break;
-            }
+        if (config::station_patterns_match(patterns, side->name)) chosen.push_back(side.get());
     if (chosen.empty())
         throw ApiError{Status::not_found, "no station matches " + stations.dump() + "; GET /api/stations lists them"};
     return chosen;

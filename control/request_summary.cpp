@@ -4,14 +4,14 @@
 
 namespace slmp::control {
 
-std::optional<RequestDevices> request_devices(const protocol::Request& request) {
+std::optional<RequestDevices> request_devices(const protocol::Request& request, devicemodel::Numbering numbering) {
     using Unit = protocol::DeviceOperand::Unit;
     const auto* spec = request.spec;
     const auto& devices = request.operands.devices;
     if (!spec || !spec->device_command() || spec->extended() || devices.size() != 1) return std::nullopt;
     const auto& d = devices.front();
     if (!d.field.spec || d.unit == Unit::DoubleWord || d.bit_block) return std::nullopt;
-    return RequestDevices{devicemodel::format_address({d.field.spec, d.field.number}), d.points,
+    return RequestDevices{devicemodel::format_address({d.field.spec, d.field.number}, numbering), d.points,
                           d.unit == Unit::Bit ? "bits" : "words"};
 }
 

@@ -21,7 +21,8 @@ struct RequestDevices {
 
 // The head device and points of a request naming one run of plain devices;
 // nullopt for other requests and for fields that did not decode.
-std::optional<RequestDevices> request_devices(const protocol::Request& request);
+// `numbering`: the CPU's, so an FX5's X/Y head device shows in octal.
+std::optional<RequestDevices> request_devices(const protocol::Request& request, devicemodel::Numbering numbering);
 
 // The command table's name for (command, subcommand), or "" when not served.
 std::string_view command_name(std::uint16_t command, std::uint16_t subcommand);

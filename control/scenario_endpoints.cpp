@@ -59,8 +59,13 @@ scenarios::Scenario parse(const std::string& body) {
 }
 
 Reply load_scenario(Api& api, const ApiRequest& request) {
+    devicemodel::NumberingScope numbering(api.station.cpu().profile().numbering);   // FX5: X/Y in octal
     try {
         auto s = parse(request.body);
+        if (!api.station.runs(s))
+            return error_reply(Status::bad_request, s.source + ": /stations: the scenario is for " +
+                                                        json(s.stations).dump() + ", not this station; post it to one "
+                                                        "of those, or to /api/plant/scenarios");
         for (const auto& r : api.station.scenario().scenarios())
             if (r.scenario->name == s.name)
                 return error_reply(Status::conflict, "a scenario named '" + s.name + "' is already running (" +

@@ -118,7 +118,7 @@ Reply device_wait(Api& api, const ApiRequest& request) {
     }
     auto run = make_run(api.station.cpu(), start, view, 1);
     WaitTarget target;
-    target.name = devicemodel::format_address(start);
+    target.name = devicemodel::format_address(start, run.numbering);
     target.fields = {{"device", target.name}, {"as", to_string(view)}};
     target.read = [&api, run] { return read_run(api.station.cpu().memory(), run)["values"][0].get<std::uint32_t>(); };
     target.parse = [view](const std::string& text) {

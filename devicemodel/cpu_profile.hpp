@@ -31,6 +31,7 @@ struct CpuProfile {
     std::string type_name;            // 0101 model name (≤ 16 characters)
     std::uint16_t model_code = 0;     // 0101 model code
     Family family = Family::IQR;
+    Numbering numbering;              // X/Y in hex, or in octal on iQ-F (profile "xy_radix")
 
     DeviceSizes sizes{};
     std::vector<Area> start_only_range_check;   // iQ-R: R and ZR check the start only

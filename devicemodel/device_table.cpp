@@ -136,7 +136,32 @@ unsigned words_per_device(const DeviceSpec& spec) {
     return spec.area == Area::LT || spec.area == Area::LST ? 4 : 2;
 }
 
+namespace {
+thread_local Numbering scoped_numbering;
+}
+
+NumberingScope::NumberingScope(Numbering numbering) : previous_(scoped_numbering) { scoped_numbering = numbering; }
+NumberingScope::~NumberingScope() { scoped_numbering = previous_; }
+Numbering NumberingScope::current() { return scoped_numbering; }
+
+Radix radix_of(const DeviceSpec& spec, Numbering numbering) {
+    return spec.area == Area::X || spec.area == Area::Y ? numbering.xy : spec.radix;
+}
+
+std::string_view radix_name(Radix radix) {
+    switch (radix) {
+    case Oct: return "octal";
+    case Dec: return "decimal";
+    case Hex: return "hexadecimal";
+    }
+    return "?";
+}
+
 std::optional<DeviceAddress> parse_address(std::string_view text, std::string* error) {
+    return parse_address(text, NumberingScope::current(), error);
+}
+
+std::optional<DeviceAddress> parse_address(std::string_view text, Numbering numbering, std::string* error) {
     auto fail = [&](std::string message) -> std::optional<DeviceAddress> {
         if (error) *error = std::move(message);
         return std::nullopt;
@@ -151,18 +176,24 @@ std::optional<DeviceAddress> parse_address(std::string_view text, std::string* e
     if (!best) return fail("unknown device in address '" + std::string(text) + "' (expected e.g. D100, M0, X1F, ZR1000)");
     auto digits = text.substr(best->symbol.size());
     std::uint32_t number = 0;
-    auto base = static_cast<int>(best->radix);
-    auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), number, base);
+    auto radix = radix_of(*best, numbering);
+    auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), number, static_cast<int>(radix));
     if (ec != std::errc{} || ptr != digits.data() + digits.size())
         return fail("bad device number '" + std::string(digits) + "' in address '" + std::string(text) + "' (" +
-                    std::string(best->symbol) + " is numbered in " + (base == 16 ? "hexadecimal" : "decimal") + ")");
+                    std::string(best->symbol) + " is numbered in " + std::string(radix_name(radix)) +
+                    (radix == Oct ? " on this CPU: " + std::string(best->symbol) + "7 is followed by " +
+                                        std::string(best->symbol) + "10"
+                                  : "") +
+                    ")");
     return DeviceAddress{best, number};
 }
 
-std::string format_address(const DeviceAddress& address) {
+std::string format_address(const DeviceAddress& address) { return format_address(address, NumberingScope::current()); }
+
+std::string format_address(const DeviceAddress& address, Numbering numbering) {
     char digits[16];
     auto [ptr, ec] = std::to_chars(digits, digits + sizeof digits, address.number,
-                                   static_cast<int>(address.spec->radix));
+                                   static_cast<int>(radix_of(*address.spec, numbering)));
     std::string text(address.spec->symbol);
     for (char* p = digits; p != ptr; ++p) text += static_cast<char>(std::toupper(static_cast<unsigned char>(*p)));
     return text;

@@ -31,7 +31,7 @@ enum class Area : std::uint8_t {
 enum class Part : std::uint8_t { Plain, Contact, Coil, Value };
 
 enum class Unit : std::uint8_t { Bit, Word, DoubleWord };
-enum class Radix : std::uint8_t { Dec = 10, Hex = 16 };
+enum class Radix : std::uint8_t { Oct = 8, Dec = 10, Hex = 16 };
 
 struct DeviceSpec {
     std::string_view symbol;     // "D", "TN", "LTN", "ZR"
@@ -41,7 +41,7 @@ struct DeviceSpec {
     Area area;
     Part part;
     Unit unit;
-    Radix radix;                 // numbering in address text and in ASCII frames
+    Radix radix;                 // numbering in address text and in ASCII frames (X/Y: see Numbering)
     std::string_view name;       // English name, for messages and docs
     // G and HG exist only behind an extension (module access U1 G10, CPU buffer
     // U3E0 G10 / HG10; subcommands 008x): named as plain devices they answer C05B
@@ -68,6 +68,36 @@ std::optional<Area> area_by_name(std::string_view name);  // "D", "T", "LT" ...
 // by word-unit commands (LTN/LSTN: 4 — value, value high, status, system).
 unsigned words_per_device(const DeviceSpec& spec);
 
+// How a CPU numbers X and Y (and DX/DY, which reach them): hexadecimal on
+// iQ-R, Q and L, octal on iQ-F (FX5: X0-X7, X10 ...; the profile's
+// "xy_radix"). Every other device's radix is fixed by the table. The number a
+// DeviceAddress holds is the bit index either way: FX5 X10 is number 8, which
+// is also what a binary frame carries.
+struct Numbering {
+    Radix xy = Radix::Hex;
+    friend bool operator==(const Numbering&, const Numbering&) = default;
+};
+// Address text in a station's files (configuration, scenarios) follows that
+// station's CPU. Their loaders hold a NumberingScope for one load, so the many
+// small parsers under them need not pass the numbering along: parse_address
+// and format_address without a Numbering use the innermost scope of this
+// thread (hexadecimal when there is none).
+class NumberingScope {
+public:
+    explicit NumberingScope(Numbering numbering);
+    ~NumberingScope();
+    NumberingScope(const NumberingScope&) = delete;
+    NumberingScope& operator=(const NumberingScope&) = delete;
+    static Numbering current();
+
+private:
+    Numbering previous_;
+};
+
+// The radix a device is written in under `numbering`.
+Radix radix_of(const DeviceSpec& spec, Numbering numbering = {});
+std::string_view radix_name(Radix radix);   // "octal", "decimal", "hexadecimal"
+
 // A device address such as D100, X1F, ZR1000, TN5, LTN0, SM400.
 struct DeviceAddress {
     const DeviceSpec* spec = nullptr;
@@ -76,7 +106,10 @@ struct DeviceAddress {
 
 // Parses address text through the table. Returns nullopt and fills `error`
 // (when given) with a message that names the problem.
+// Without a Numbering: NumberingScope::current().
 std::optional<DeviceAddress> parse_address(std::string_view text, std::string* error = nullptr);
+std::optional<DeviceAddress> parse_address(std::string_view text, Numbering numbering, std::string* error = nullptr);
 std::string format_address(const DeviceAddress& address);
+std::string format_address(const DeviceAddress& address, Numbering numbering);
 
 }  // namespace slmp::devicemodel

@@ -6,7 +6,7 @@ namespace slmp::protocol::client {
 
 std::vector<std::uint8_t> build_request(const FrameOptions& options, std::uint16_t command, std::uint16_t subcommand,
                                         const std::function<void(FieldWriter&)>& body) {
-    FieldWriter w(options.codec);
+    FieldWriter w(options.codec, CodecOptions{.numbering = options.numbering});
     w.u16(options.monitoring_timer);
     w.u16(command);
     w.u16(subcommand);

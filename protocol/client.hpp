@@ -21,6 +21,7 @@ struct FrameOptions {
     std::uint16_t serial = 0;          // 4E only
     Route route{};
     std::uint16_t monitoring_timer = 0x0010;   // units of 250 ms
+    devicemodel::Numbering numbering;   // the target CPU's: FX5 writes X/Y in octal in ASCII frames
 };
 
 // A request: header, monitoring timer, command, subcommand, then whatever `body` writes.

@@ -78,7 +78,7 @@ Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy polic
     // After the header: monitoring timer, command, subcommand (2 bytes each).
     const auto& header = request.header;
     auto body = input.subspan(header.header_size, header.data_length);
-    FieldReader in(header.codec, body, CodecOptions{ports_[0].zr_ascii_hex});
+    FieldReader in(header.codec, body, codec_options(0));
     in.u16("monitoring timer");
     request.command = in.u16("command");
     request.subcommand = in.u16("subcommand");

@@ -21,7 +21,7 @@ void Engine::decode_1e(Request& request, std::span<const std::uint8_t> input, St
     if (pc != 0xFF && !(own.configured() && pc == own.station)) request.route_error = EndCode::RouteStationNotFound;
     request.spec = find_command(row->command, row->subcommand);
     if (request.spec && row->decode) {
-        FieldReader in(header.codec, request.data, CodecOptions{ports_[0].zr_ascii_hex});
+        FieldReader in(header.codec, request.data, codec_options(0));
         DecodeContext context{in, *request.spec, ports_[0], request.operands, true};
         row->decode(context);
     }

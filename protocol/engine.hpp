@@ -120,6 +120,10 @@ public:
 private:
     // A 1E request after framing: its 1E row, route, 3E row and operands (decode_1e.cpp).
     void decode_1e(Request& request, std::span<const std::uint8_t> input, StationNumbers own) const;
+    // How fields are written for CPU No.(index+1): its port's ZR form, its X/Y numbering.
+    CodecOptions codec_options(std::size_t index) const {
+        return {ports_[index].zr_ascii_hex, cpus_[index]->profile().numbering};
+    }
 
     devicemodel::Cpu& cpu_;
     CpuSet cpus_{};

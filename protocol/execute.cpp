@@ -152,8 +152,8 @@ Outcome Engine::execute(const Request& request, Session& session) {
     if (auto refused = protection_refusal(target, ports_[request.target], *spec, session, reply))
         return std::move(*refused);
 
-    FieldReader in(request.header.codec, request.data, CodecOptions{profile.zr_ascii_hex});
-    FieldWriter out(request.header.codec, CodecOptions{ports_[request.target].zr_ascii_hex});
+    FieldReader in(request.header.codec, request.data, codec_options(0));
+    FieldWriter out(request.header.codec, codec_options(request.target));
     CommandContext ctx{target, ports_[request.target], cpus_, profile, request.header, *spec, request.operands,
                        session, in, out};
     auto code = own_1e_handler ? row_1e->handler(ctx) : spec->handler(ctx);

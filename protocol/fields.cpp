@@ -11,7 +11,7 @@ namespace {
 
 int ascii_radix(const DeviceSpec& spec, const CodecOptions& options) {
     if (spec.symbol == "ZR" && options.zr_ascii_hex) return 16;
-    return static_cast<int>(spec.radix);
+    return static_cast<int>(devicemodel::radix_of(spec, options.numbering));
 }
 
 std::size_t code_bytes(DeviceForm form) { return form == DeviceForm::Q ? 1 : 2; }

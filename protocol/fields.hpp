@@ -27,6 +27,7 @@ enum class DeviceForm : std::uint8_t { Q, IQR };
 // Codec choices that depend on the CPU rather than the frame.
 struct CodecOptions {
     bool zr_ascii_hex = false;   // number ZR in hex in ASCII frames (the manuals' form)
+    devicemodel::Numbering numbering;   // X/Y digits in ASCII frames: hex, or octal on iQ-F
 };
 
 // An index register that modifies a number: Z0–Z24 (16-bit) or LZ0–LZ12 (32-bit).

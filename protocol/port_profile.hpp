@@ -66,6 +66,9 @@ struct PortProfile {
     // (4004, inferred: the 4xxx "system protect" code of Q/L CPUs).
     std::uint16_t system_protect_code = 0x4004;
     bool online_change = true;                     // the port's default: writes served in RUN
+    // The ports' default for TCP clients at once (profile "max_connections"):
+    // the CPU's connection count, 64 when a profile file does not say.
+    unsigned max_connections = 64;
     // What each refused file operation answers (profile "file_end_codes",
     // docs/end-codes.md), indexed by devicemodel::FileFault; [None] is 0.
     std::array<std::uint16_t, devicemodel::kFileFaultCount> file_end_codes{};

@@ -4,7 +4,6 @@
 
 #include "config/config.hpp"
 #include "devicemodel/drives.hpp"
-#include "devicemodel/drives.hpp"
 #include "protocol/error_response.hpp"
 #include "protocol/hex.hpp"
 #include "scenarios/bind_labels.hpp"
@@ -40,6 +39,7 @@ std::chrono::microseconds micros(double ms) { return std::chrono::microseconds(s
 ScenarioRunner::ScenarioRunner(std::vector<Scenario> scenarios, devicemodel::Cpu& cpu, EventSink log, Station* station)
     : scenarios_(std::move(scenarios)), cpu_(cpu), log_(std::move(log)), station_(station) {
     check_together(scenarios_);
+    devicemodel::NumberingScope numbering(cpu_.profile().numbering);   // messages name FX5 X/Y in octal
     for (auto& s : scenarios_) {
         bind_labels(s, cpu_.labels());
         check_devices(s, cpu_.memory(), cpu_.profile().name);

@@ -234,6 +234,9 @@ struct Scenario {
     std::string source;                           // the file, for messages
     std::string name;
     std::string description;
+    // "stations": the plant's stations it is for (names or patterns such as
+    // "press-*"); empty: every station it is given to.
+    std::vector<std::string> stations;
     std::uint64_t seed = 1;
     InitialState initial;
     Timeline timeline;

@@ -2,7 +2,7 @@
 """scripts/slowloris.py [--half N] [--garbage N] [--build DIR] [--sim-arg=ARG ...] — the slowloris
 measurement of issue 16 (docs/testing.md, "Slow and hostile clients").
 
-Starts slmp-sim with its default port settings (64 connections per port, 5 s
+Starts slmp-sim with its default port settings (the R08CPU profile's 16 connections per port, 5 s
 partial-frame timeout, 300 s idle timeout) on free loopback ports, then:
   1. baseline: slmp-bench, 1 connection, 5 s of 1-word reads -> p99;
   2. attack: M garbage frames (default 10000) on short connections, then N

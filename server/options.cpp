@@ -226,12 +226,14 @@ CommandLine parse_command_line(int argc, char** argv) {
         return cl;
     }
 
+    // --profile is known before the file is read: the file's addresses follow its numbering.
+    const auto profile = vm.count("profile") ? vm["profile"].as<std::string>() : std::string();
     if (vm.count("check-config")) {
         if (vm.count("config")) throw ConfigError("--check-config FILE checks FILE; leave --config out");
         cl.check_only = true;
-        cl.plant = config::load_plant_config(vm["check-config"].as<std::string>());
+        cl.plant = config::load_plant_config(vm["check-config"].as<std::string>(), profile);
     } else if (vm.count("config")) {
-        cl.plant = config::load_plant_config(vm["config"].as<std::string>());
+        cl.plant = config::load_plant_config(vm["config"].as<std::string>(), profile);
     } else {
         cl.plant.stations.emplace_back();
     }

@@ -12,6 +12,7 @@ using asio::ip::tcp;
 TcpListener::TcpListener(asio::io_context& io, station::Station& station, const config::PortConfig& port,
                          const asio::ip::address& bind, SessionFactory factory)
     : io_(io), station_(station), config_(port), endpoint_(bind, port.port), acceptor_(io), factory_(std::move(factory)) {
+    if (!config_.max_connections) config_.max_connections = station.engine().port().max_connections;
     if (!factory_)
         factory_ = [this](tcp::socket socket, std::function<void(StreamSession*)> on_closed,
                           std::function<std::size_t()> connections) -> std::shared_ptr<StreamSession> {
@@ -47,9 +48,9 @@ asio::awaitable<void> TcpListener::accept_loop() {
         sessions_.emplace(session.get(), session);
         if (config_.max_connections_per_address > 0) ++sessions_per_address_[session->peer().address];
         session->start();
-        if (sessions_.size() >= config_.max_connections) {
+        if (sessions_.size() >= *config_.max_connections) {
             spdlog::info("TCP port {}: {} of {} connection(s) in use; refusing new clients until one leaves", port(),
-                         sessions_.size(), config_.max_connections);
+                         sessions_.size(), *config_.max_connections);
             acceptor_.close(ec);
             co_return;
         }
@@ -95,7 +96,7 @@ void TcpListener::set_refusing(bool refusing) {
         acceptor_.close(ec);
         return;
     }
-    if (stopping_ || acceptor_.is_open() || sessions_.size() >= config_.max_connections) return;
+    if (stopping_ || acceptor_.is_open() || sessions_.size() >= *config_.max_connections) return;
     reopen();
 }
 

@@ -23,6 +23,8 @@ Station::Station(config::Profile profile, protocol::EngineOptions options)
 
 Station::Station(boost::asio::io_context& io, const config::ServerConfig& config)
     : Station(config::resolve_profile(config), protocol::EngineOptions{config.max_request_bytes}) {
+    // The scenario files' addresses follow this CPU (FX5: X/Y in octal).
+    devicemodel::NumberingScope numbering(cpu_.profile().numbering);
     config_ = config;
     pending_scenarios_ = load_scenarios();   // their initial state joins config_ first
     config::apply_initial_values(cpu_, config_);

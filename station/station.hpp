@@ -160,6 +160,9 @@ public:
     // Scenarios and recording: the one hook around the engine (station/scenario_hook.hpp).
     ScenarioHook& scenario() { return scenario_; }
     const ScenarioHook& scenario() const { return scenario_; }
+    // Whether a scenario is for this station: it names no stations, this
+    // station has no name (a lone station), or one of its patterns matches.
+    bool runs(const scenarios::Scenario& s) const;
 
 private:
     void start_cpu_runtime(boost::asio::io_context& io);          // "cpu" parameters, scan cycle, state directory

@@ -21,7 +21,7 @@ bool wanted(const PushTarget& t, const std::string& to) {
 
 std::vector<Station::Pushed> Station::ondemand(const scenarios::OndemandAction& action, const std::string& why) {
     const auto& spec = *action.first.spec;
-    const auto name = devicemodel::format_address(action.first);
+    const auto name = devicemodel::format_address(action.first, cpu_.profile().numbering);
     if (!cpu_.memory().contains(spec.area, action.first.number, action.points))
         throw config::ConfigError("ondemand: " + name + " with " + std::to_string(action.points) + " point(s) runs past the " +
                                   std::string(devicemodel::area_name(spec.area)) + " size of " +

@@ -3,6 +3,7 @@
 // configuration), then start them once the ports exist, driven by the scan cycle.
 #include <spdlog/spdlog.h>
 
+#include "config/station_pattern.hpp"
 #include "scenarios/initial_state.hpp"
 #include "scenarios/loader.hpp"
 #include "station/scan_loop.hpp"
@@ -14,11 +15,17 @@ namespace slmp::station {
 std::vector<scenarios::Scenario> Station::load_scenarios() {
     std::vector<scenarios::Scenario> list;
     for (const auto& file : config_.scenarios) {
-        list.push_back(scenarios::load_scenario(file));
-        scenarios::apply_initial_state(list.back(), config_);
+        auto s = scenarios::load_scenario(file);
+        if (!runs(s)) continue;   // a plant-wide list: the file names other stations
+        scenarios::apply_initial_state(s, config_);
+        list.push_back(std::move(s));
     }
     scenarios::check_together(list);
     return list;
+}
+
+bool Station::runs(const scenarios::Scenario& s) const {
+    return s.stations.empty() || config_.name.empty() || config::station_patterns_match(s.stations, config_.name);
 }
 
 void Station::start_scenarios(std::vector<scenarios::Scenario> list) {

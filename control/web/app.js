@@ -57,7 +57,14 @@ function showMessage(text, isError = true) {
 // ------------------------------------------------------------- addresses --
 
 // Splits "D100" into its symbol and number, the longest symbol first
-// ("LTN0" is LTN, not L), as the simulator's device table does.
+// ("LTN0" is LTN, not L), as the simulator's device table does. The radix
+// comes from /api/info, which gives the CPU's own (an FX5 numbers X/Y in octal).
+const RADIXES = {
+  8: { pattern: /^[0-7]+$/, name: 'octal on this CPU', bitsPerRow: 8 },
+  10: { pattern: /^[0-9]+$/, name: 'decimal', bitsPerRow: 10 },
+  16: { pattern: /^[0-9A-F]+$/, name: 'hexadecimal', bitsPerRow: 16 },
+};
+
 function parseAddress(text) {
   const upper = text.trim().toUpperCase();
   let best = null;
@@ -67,9 +74,10 @@ function parseAddress(text) {
   if (!best) throw new Error(`unknown device in '${text.trim()}' (e.g. D100, M0, X1F)`);
   const spec = state.devices.get(best);
   const digits = upper.slice(best.length);
-  const pattern = spec.radix === 16 ? /^[0-9A-F]+$/ : /^[0-9]+$/;
-  if (!pattern.test(digits)) {
-    throw new Error(`bad device number '${digits}' in '${text.trim()}' (${best} is numbered in ${spec.radix === 16 ? 'hexadecimal' : 'decimal'})`);
+  const radix = RADIXES[spec.radix];
+  if (!radix.pattern.test(digits)) {
+    const next = spec.radix === 8 ? `: ${best}7 is followed by ${best}10` : '';
+    throw new Error(`bad device number '${digits}' in '${text.trim()}' (${best} is numbered in ${radix.name}${next})`);
   }
   return { symbol: best, spec, number: parseInt(digits, spec.radix) };
 }
@@ -150,13 +158,13 @@ function addWatch(range, format = 'unsigned') {
   refreshWatch(w);
 }
 
-// Bits in rows of 16 (hex-numbered devices) or 10 (decimal ones); words in rows of 10.
+// Bits in rows of 16 (hex-numbered devices), 8 (octal) or 10 (decimal); words in rows of 10.
 function buildCells(w) {
   const body = $('.watch-body', w.element);
   body.replaceChildren();
   const table = document.createElement('table');
   table.className = w.spec.unit === 'bit' ? 'cells bits' : 'cells words';
-  const perRow = w.spec.unit === 'bit' ? (w.spec.radix === 16 ? 16 : 10) : (w.spec.unit === 'dword' ? 4 : 10);
+  const perRow = w.spec.unit === 'bit' ? RADIXES[w.spec.radix].bitsPerRow : (w.spec.unit === 'dword' ? 4 : 10);
   let row = null;
   w.cells = [];
   for (let i = 0; i < w.count; i++) {

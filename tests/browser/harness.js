@@ -142,7 +142,7 @@ async function httpJson(url, method = 'GET', body = undefined) {
 // own-station route 00 FF 03FF 00, data length, monitoring timer 0010,
 // command, subcommand.
 
-const DEVICE_CODES = { D: 0xA8, M: 0x90 };
+const DEVICE_CODES = { D: 0xA8, M: 0x90, X: 0x9C, Y: 0x9D };
 
 function frame(command, subcommand, data) {
   const body = Buffer.concat([Buffer.from([0x10, 0x00, command & 0xFF, command >> 8, subcommand & 0xFF, subcommand >> 8]), data]);

@@ -119,6 +119,25 @@ TEST_CASE("Connection limit counts per port", "[policy][tcp][limit]") {
     CHECK(serves(b));
 }
 
+TEST_CASE("Connection limit: the profile's connection count is the default (FX5U: 8)", "[policy][tcp][limit][profile]") {
+    SimProcess sim(with_args({"--profile", "FX5U-32MR"}));
+    std::vector<TcpClient> clients;
+    for (int i = 0; i < 8; ++i) {
+        clients.push_back(TcpClient::open(sim.tcp_port()));
+        REQUIRE(serves(clients.back()));
+    }
+    int error = 0;
+    CHECK_FALSE(TcpClient::connect(sim.tcp_port(), &error).has_value());
+    CHECK(error == ECONNREFUSED);
+    // A configured port's own max_connections wins over the profile's.
+    SimProcess more(with_args({"--profile", "FX5U-32MR", "--max-connections", "9"}));
+    std::vector<TcpClient> nine;
+    for (int i = 0; i < 9; ++i) {
+        nine.push_back(TcpClient::open(more.tcp_port()));
+        REQUIRE(serves(nine.back()));
+    }
+}
+
 TEST_CASE("A length field over the max-request-bytes limit closes the connection and others are still served",
           "[policy][tcp][limits]") {
     SimProcess sim(with_args({"--max-request-bytes", "64"}));
@@ -233,8 +252,8 @@ TEST_CASE("Partial-frame timeout: whole frames in pieces within the timeout are 
 }
 
 TEST_CASE("Slowloris: 300 half-frame connections do not keep a well-behaved client out", "[policy][tcp][partial][slowloris]") {
-    // The default connection limit (64) and idle timeout (300 s): the half-frames fill
-    // every slot, the partial-frame timeout frees them, and the client gets in.
+    // The default connection limit (R08CPU: 16, the profile's) and idle timeout (300 s):
+    // the half-frames fill every slot, the partial-frame timeout frees them, and the client gets in.
     SimProcess sim(with_args({"--partial-frame-timeout", "1"}));
     std::vector<TcpClient> attackers;
     for (int i = 0; i < 300; ++i) {
@@ -242,7 +261,7 @@ TEST_CASE("Slowloris: 300 half-frame connections do not keep a well-behaved clie
         if (c && c->send(hex("50 00 00 FF"))) attackers.push_back(std::move(*c));
     }
     INFO(attackers.size() << " half-frame connections were accepted");
-    CHECK(attackers.size() >= 64);
+    CHECK(attackers.size() >= 16);
     // Well within the idle timeout: only the partial-frame timeout can have freed a slot.
     auto client = served_within(sim.tcp_port(), 60s);
     REQUIRE(client);

@@ -371,3 +371,47 @@ TEST_CASE("plant: clients of one station on several threads see every request at
     auto last = nlohmann::json::parse(http_get(sim.http_port(), "/api/stations/hot/devices/D1000?count=8").body);
     CHECK(last["values"] == nlohmann::json(std::vector<int>(kClients, kRounds)));
 }
+
+TEST_CASE("plant: scenario files name their stations; one list places each where it belongs", "[plant][scenario]") {
+    TempDir dir;
+    auto presses = dir.write("presses.json", R"({"name": "presses", "stations": "press-*", "initial": {"devices": {"D0": 7}}})");
+    auto oven = dir.write("oven.json", R"({"name": "oven", "stations": ["oven-1"], "initial": {"devices": {"D0": 9}}})");
+    auto everyone = dir.write("all.json", R"({"name": "all", "initial": {"devices": {"D1": 1}}})");
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0}, "scenarios": [")" + presses.string() +
+                                 R"(", ")" + oven.string() + R"(", ")" + everyone.string() + R"("],
+        "stations": [{"template": {}, "count": 2, "name": "press-{i}", "tcp_port": 0}, {"name": "oven-1", "tcp_port": 0}]})"));
+    auto words = [&](const std::string& station) {
+        return nlohmann::json::parse(http_get(sim.http_port(), "/api/stations/" + station + "/devices/D0?count=2").body)["values"];
+    };
+    CHECK(words("press-1") == nlohmann::json({7, 1}));
+    CHECK(words("press-2") == nlohmann::json({7, 1}));
+    CHECK(words("oven-1") == nlohmann::json({9, 1}));
+
+    SECTION("posted to the plant without \"stations\", a scenario goes to the stations it names") {
+        auto posted = http(sim.http_port(), "POST", "/api/plant/scenarios",
+                           R"({"scenario": {"name": "p2", "stations": "*-2", "initial": {"devices": {"D1": 5}}}})");
+        INFO(posted.body);
+        CHECK(posted.status == 201);
+        CHECK(posted.json()["stations"] == nlohmann::json({"press-2"}));
+        CHECK(words("press-2") == nlohmann::json({7, 5}));
+        CHECK(words("press-1") == nlohmann::json({7, 1}));
+    }
+    SECTION("posted to a station it does not name, it is refused") {
+        auto refused = http(sim.http_port(), "POST", "/api/stations/oven-1/scenarios",
+                            R"({"name": "x", "stations": "press-*", "initial": {"devices": {"D1": 5}}})");
+        CHECK(refused.status == 400);
+        CHECK(refused.error() == "request body (x): /stations: the scenario is for [\"press-*\"], not this station; post it "
+                                 "to one of those, or to /api/plant/scenarios");
+        CHECK(words("oven-1") == nlohmann::json({9, 1}));
+    }
+}
+
+TEST_CASE("plant: a scenario file whose stations match none of the plant is a configuration error", "[plant][scenario]") {
+    TempDir dir;
+    auto typo = dir.write("typo.json", R"({"name": "typo", "stations": "pres-*"})");
+    auto file = dir.write("plant.json", R"({"scenarios": [")" + typo.string() +
+                                            R"("], "stations": [{"template": {}, "count": 2, "name": "press-{i}", "tcp_port": 0}]})");
+    auto checked = run_sim({"--check-config", file.string()});
+    CHECK(checked.exit_code == 2);
+    CHECK(checked.err.find(typo.string() + ": /stations: no station of the plant is named \"pres-*\"") != std::string::npos);
+}

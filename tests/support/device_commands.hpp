@@ -119,7 +119,7 @@ inline Payload ext_device(Form form, std::string_view address, const Extension& 
     code.resize(q ? 2 : 4, '*');
     std::string digits(q ? 6 : 10, '0');
     auto n = parsed->number;
-    auto radix = static_cast<unsigned>(spec.radix);
+    auto radix = static_cast<unsigned>(devicemodel::radix_of(spec, devicemodel::NumberingScope::current()));
     for (std::size_t i = digits.size(); i-- > 0 && n != 0; n /= radix) digits[i] = "0123456789ABCDEF"[n % radix];
     std::string extension =
         ext.kind == Extension::None ? "0000" : (ext.kind == Extension::J ? "J" : "U") + hexn(ext.target, 3);

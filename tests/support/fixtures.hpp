@@ -195,7 +195,8 @@ inline Payload error(std::uint16_t end_code, std::uint16_t command, std::uint16_
 enum class Form { Q, IQR };
 
 // The device field of a request: binary number then code; ASCII code then
-// number in the device's radix. `zr_hex` numbers ZR in hex in ASCII.
+// number in the device's radix (X/Y: that of the NumberingScope in effect).
+// `zr_hex` numbers ZR in hex in ASCII.
 inline Payload device(Form form, std::string_view address, bool zr_hex = false) {
     std::string error;
     auto parsed = devicemodel::parse_address(address, &error);
@@ -208,7 +209,9 @@ inline Payload device(Form form, std::string_view address, bool zr_hex = false) 
                le(q ? static_cast<std::uint32_t>(spec.q_code) : spec.iqr_code, q ? 1 : 2);
     std::string code(q ? spec.ascii_q : spec.symbol);
     code.resize(q ? 2 : 4, '*');
-    unsigned radix = spec.symbol == "ZR" && zr_hex ? 16 : static_cast<unsigned>(spec.radix);
+    unsigned radix = spec.symbol == "ZR" && zr_hex
+                         ? 16
+                         : static_cast<unsigned>(devicemodel::radix_of(spec, devicemodel::NumberingScope::current()));
     std::string digits(q ? 6 : 8, '0');
     auto n = parsed->number;
     for (std::size_t i = digits.size(); i-- > 0 && n != 0; n /= radix) digits[i] = "0123456789ABCDEF"[n % radix];

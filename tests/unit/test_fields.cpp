@@ -73,8 +73,8 @@ TEST_CASE("device fields: the manual's examples (§5.3, §5.4)", "[fields]") {
     }
     SECTION("ZR: decimal by default, hex when the profile says so") {
         CHECK(write_device(Codec::Ascii, DeviceForm::Q, "ZR163839") == "ZR163839");
-        CHECK(write_device(Codec::Ascii, DeviceForm::Q, "ZR163839", CodecOptions{true}) == "ZR027FFF");
-        CHECK(write_device(Codec::Binary, DeviceForm::Q, "ZR163839", CodecOptions{true}) == "FF 7F 02 B0");
+        CHECK(write_device(Codec::Ascii, DeviceForm::Q, "ZR163839", CodecOptions{.zr_ascii_hex = true}) == "ZR027FFF");
+        CHECK(write_device(Codec::Binary, DeviceForm::Q, "ZR163839", CodecOptions{.zr_ascii_hex = true}) == "FF 7F 02 B0");
     }
     SECTION("reader, both forms and codecs") {
         struct Case {

@@ -167,6 +167,7 @@ TEST_CASE("out of range at the end of every device", "[profiles][range]") {
     auto e = GENERATE(from_range(std::begin(kExpect), std::end(kExpect)));
     auto cpu = make_cpu(e.profile);
     const auto& profile = cpu.profile();
+    devicemodel::NumberingScope numbering(profile.numbering);   // FX5: X/Y addresses and ASCII digits in octal
     auto wire = GENERATE_COPY(from_range(wires_for(e)));
     for (auto form : {Form::Q, Form::IQR}) {
         if (form == Form::IQR && !e.answers_iqr_form) continue;

@@ -124,3 +124,16 @@ TEST_CASE("extends mistakes name the profile and the fix", "[profiles][config]")
     CHECK_THROWS_WITH(config::load_profile((dir / "c.json").string()), Contains("cannot open the base profile"));
     std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("the ports' default connection count comes from the profile", "[profiles][connections]") {
+    for (const auto& name : config::builtin_profile_names()) {
+        INFO(name);
+        auto profile = config::load_profile(name);
+        unsigned expected = profile.cpu.family == devicemodel::Family::IQF ? 8 : name == "RJ71EN71" ? 56 : 16;
+        CHECK(profile.port.max_connections == expected);
+    }
+    CHECK_THROWS_WITH(config::parse_profile(R"({"extends": "R08CPU", "name": "X", "description": "x", "max_connections": 0})", "p.json"),
+                      Catch::Contains("max_connections") && Catch::Contains("must be at least 1"));
+    CHECK_THROWS_WITH(config::parse_profile(R"({"extends": "R08CPU", "name": "X", "description": "x", "xy_radix": 10})", "p.json"),
+                      Catch::Contains("xy_radix") && Catch::Contains("must be 8 or 16"));
+}

@@ -35,9 +35,9 @@ long long parse_integer(const std::string& text, long long min, long long max, c
 
 }  // namespace
 
-devicemodel::DeviceAddress parse_device(const std::string& text) {
+devicemodel::DeviceAddress parse_device(const std::string& text, devicemodel::Numbering numbering) {
     std::string error;
-    auto address = devicemodel::parse_address(text, &error);
+    auto address = devicemodel::parse_address(text, numbering, &error);
     if (!address) throw UsageError(error);
     return *address;
 }
@@ -67,11 +67,11 @@ Assignment parse_assignment(const std::string& text) {
     return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
-DeviceRange parse_range(const std::string& text) {
+DeviceRange parse_range(const std::string& text, devicemodel::Numbering numbering) {
     auto dash = text.find('-');
-    if (dash == std::string::npos) return {parse_device(text), 1};
-    auto start = parse_device(text.substr(0, dash));
-    auto end = parse_device(text.substr(dash + 1));
+    if (dash == std::string::npos) return {parse_device(text, numbering), 1};
+    auto start = parse_device(text.substr(0, dash), numbering);
+    auto end = parse_device(text.substr(dash + 1), numbering);
     if (end.spec != start.spec || end.number < start.number)
         throw UsageError("'" + text + "' is not a range: write START-END of one device, e.g. D100-D119");
     return {start, end.number - start.number + 1};
@@ -79,13 +79,14 @@ DeviceRange parse_range(const std::string& text) {
 
 bool is_bit_device(const devicemodel::DeviceAddress& device) { return device.spec->unit == devicemodel::Unit::Bit; }
 
-std::vector<std::string> value_labels(const devicemodel::DeviceAddress& start, std::size_t count, bool bit_units) {
+std::vector<std::string> value_labels(const devicemodel::DeviceAddress& start, std::size_t count, bool bit_units,
+                                      devicemodel::Numbering numbering) {
     std::vector<std::string> labels;
     const unsigned per_device = bit_units ? 1 : devicemodel::words_per_device(*start.spec);
     const unsigned step = !bit_units && is_bit_device(start) ? 16 : 1;
     for (std::size_t i = 0; i < count; ++i) {
         devicemodel::DeviceAddress at{start.spec, static_cast<std::uint32_t>(start.number + (i / per_device) * step)};
-        auto label = devicemodel::format_address(at);
+        auto label = devicemodel::format_address(at, numbering);
         if (per_device > 1 && i % per_device != 0) label += "+" + std::to_string(i % per_device);
         labels.push_back(label);
     }

@@ -11,7 +11,8 @@
 
 namespace slmp::cli {
 
-devicemodel::DeviceAddress parse_device(const std::string& text);
+// `numbering`: the target's (--octal-xy, or an iQ-F station found by --plant-station).
+devicemodel::DeviceAddress parse_device(const std::string& text, devicemodel::Numbering numbering);
 // A point count for 0401/1401: 1..65535 (the PLC enforces its own, lower limit
 // and answers with its end code, which is what a user testing a PLC wants to see).
 std::uint16_t parse_points(const std::string& text);
@@ -34,14 +35,15 @@ struct DeviceRange {
     devicemodel::DeviceAddress start;
     std::uint32_t points = 1;
 };
-DeviceRange parse_range(const std::string& text);
+DeviceRange parse_range(const std::string& text, devicemodel::Numbering numbering);
 
 bool is_bit_device(const devicemodel::DeviceAddress& device);
 
 // Names for the values of a read starting at `start`: bit units name every
 // device; word units name one word each (a bit device's word covers 16 bits:
 // M0, M16 ...; a 4-word LTN is LTN0, LTN0+1, ...).
-std::vector<std::string> value_labels(const devicemodel::DeviceAddress& start, std::size_t count, bool bit_units);
+std::vector<std::string> value_labels(const devicemodel::DeviceAddress& start, std::size_t count, bool bit_units,
+                                      devicemodel::Numbering numbering);
 
 // Cells for one word value: unsigned decimal, signed decimal, hex.
 std::string word_hex(std::uint32_t value, int digits);

@@ -12,8 +12,9 @@ namespace client = protocol::client;
 
 void run_read(Invocation& in) {
     const auto& args = in.options.args;
+    const auto numbering = in.client.frame().numbering;
     if (args.empty() || args.size() > 2) throw UsageError("read needs DEVICE [POINTS], e.g. slmp read D100 10");
-    auto start = parse_device(args[0]);
+    auto start = parse_device(args[0], numbering);
     std::uint16_t points = args.size() == 2 ? parse_points(args[1]) : 1;
     const bool bits = in.options.bits;
     if (bits && !is_bit_device(start))
@@ -24,7 +25,7 @@ void run_read(Invocation& in) {
                         : client::read_words(frame, start, points, in.options.form);
     auto response = in.client.exchange(request);
     auto reader = response.reader();
-    auto labels = value_labels(start, points, bits);
+    auto labels = value_labels(start, points, bits, numbering);
 
     Json values = Json::array();
     Table table;
@@ -46,7 +47,7 @@ void run_read(Invocation& in) {
                                   word_hex(data[i], 4)});
         }
     }
-    Json json{{"device", devicemodel::format_address(start)},
+    Json json{{"device", devicemodel::format_address(start, numbering)},
               {"unit", bits ? "bit" : "word"},
               {"points", points},
               {"devices", labels},
@@ -56,9 +57,10 @@ void run_read(Invocation& in) {
 
 void run_write(Invocation& in) {
     const auto& args = in.options.args;
+    const auto numbering = in.client.frame().numbering;
     if (args.size() < 2) throw UsageError("write needs DEVICE VALUE..., e.g. slmp write D100 1 2 3");
     if (args.size() - 1 > 65535) throw UsageError("write takes at most 65535 values");
-    auto start = parse_device(args[0]);
+    auto start = parse_device(args[0], numbering);
     const bool bits = in.options.bits;
     if (bits && !is_bit_device(start))
         throw UsageError(args[0] + " is a word device; --bits writes bit devices (X, Y, M, B, ...)");
@@ -75,8 +77,8 @@ void run_write(Invocation& in) {
     in.client.exchange(request);
 
     auto points = args.size() - 1;
-    auto labels = value_labels(start, points, bits);
-    Json json{{"device", devicemodel::format_address(start)}, {"unit", bits ? "bit" : "word"}, {"points", points},
+    auto labels = value_labels(start, points, bits, numbering);
+    Json json{{"device", devicemodel::format_address(start, numbering)}, {"unit", bits ? "bit" : "word"}, {"points", points},
               {"written", true}};
     std::string range = labels.front() + (points > 1 ? "-" + labels.back() : "");
     in.output.result(json, "wrote " + std::to_string(points) + (bits ? " bit(s) " : " word(s) ") + range);

@@ -48,7 +48,8 @@ int main(int argc, char** argv) {
     Output output(std::cout, options->json);
     try {
         const auto& spec = resolve_command(*options);
-        if (!options->plant_station.empty()) look_up_station(options->target, options->plant_station, options->api_port);
+        if (!options->plant_station.empty())
+            look_up_station(options->target, options->frame.numbering, options->plant_station, options->api_port);
         Client client(options->target, options->frame, options->password);
         Invocation invocation{*options, client, output};
         spec.run(invocation);

@@ -30,14 +30,14 @@ struct Item {
     std::vector<std::string> labels;
 };
 
-Item make_item(const std::string& text) {
-    Item item{parse_range(text), false, 0, {}};
+Item make_item(const std::string& text, devicemodel::Numbering numbering) {
+    Item item{parse_range(text, numbering), false, 0, {}};
     item.bits = is_bit_device(item.range.start);
     std::uint64_t points = item.range.points;
     if (!item.bits) points *= devicemodel::words_per_device(*item.range.start.spec);
     if (points > 65535) throw UsageError("'" + text + "' is too long for one read (65535 points at most)");
     item.points = static_cast<std::uint16_t>(points);
-    item.labels = value_labels(item.range.start, item.points, item.bits);
+    item.labels = value_labels(item.range.start, item.points, item.bits, numbering);
     return item;
 }
 
@@ -70,7 +70,7 @@ void run_monitor(Invocation& in) {
     std::vector<Item> items;
     std::vector<std::string> headers{"time"};
     for (const auto& text : args) {
-        items.push_back(make_item(text));
+        items.push_back(make_item(text, in.client.frame().numbering));
         headers.insert(headers.end(), items.back().labels.begin(), items.back().labels.end());
     }
 

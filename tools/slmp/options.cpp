@@ -70,7 +70,7 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
     std::string host = o.target.host, timeout = "3s", interval = "1s";
     std::string network, station, module_io, multidrop, serial;
     unsigned long count = 0;
-    bool udp = false, ascii = false, e4 = false, iqr = false;
+    bool udp = false, ascii = false, e4 = false, iqr = false, octal_xy = false;
 
     po::options_description global("Global options");
     // clang-format off
@@ -88,6 +88,7 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         ("multidrop", po::value(&multidrop), "request destination multidrop station No. (default 0)")
         ("timeout", po::value(&timeout)->default_value(timeout), "wait at most this long for each answer (500ms, 2s)")
         ("iqr", po::bool_switch(&iqr), "iQ-R device subcommands 0002/0003 instead of 0000/0001")
+        ("octal-xy", po::bool_switch(&octal_xy), "X/Y numbered in octal, as on an iQ-F (FX5): X7 is followed by X10")
         ("password", po::value<std::string>(), "send Remote Unlock (1630) with this password first")
         ("plant-station", po::value(&o.plant_station), "slmp-sim plant: talk to the station of this name (its port from the HTTP API)")
         ("api-port", po::value(&o.api_port)->default_value(o.api_port), "slmp-sim's HTTP port, for --plant-station")
@@ -149,6 +150,7 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         if (!multidrop.empty())
             o.frame.route.multidrop = static_cast<std::uint8_t>(route_number("multidrop", multidrop, 0xFF, false));
         o.form = iqr ? protocol::DeviceForm::IQR : protocol::DeviceForm::Q;
+        if (octal_xy) o.frame.numbering.xy = devicemodel::Radix::Oct;
         if (vm.count("password")) o.password = vm["password"].as<std::string>();
         if (vm.count("interval")) o.interval = duration_option("interval", interval);
         if (vm.count("count")) {

@@ -25,10 +25,11 @@ void check_count(std::size_t count, const char* what) {
 }
 
 void random_read(Invocation& in, const std::vector<std::string>& items) {
+    const auto numbering = in.client.frame().numbering;
     if (in.options.bits) throw UsageError("random read takes no --bits: it reads words and double words");
     std::vector<DeviceAddress> words, dwords;
-    for (const auto& item : items) words.push_back(parse_device(item));
-    for (const auto& item : in.options.dwords) dwords.push_back(parse_device(item));
+    for (const auto& item : items) words.push_back(parse_device(item, numbering));
+    for (const auto& item : in.options.dwords) dwords.push_back(parse_device(item, numbering));
     if (words.empty() && dwords.empty())
         throw UsageError("random read needs devices, e.g. slmp random read D0 M100 --dword D200");
     check_count(words.size(), "word devices");
@@ -40,22 +41,23 @@ void random_read(Invocation& in, const std::vector<std::string>& items) {
     Table table{{"device", "access", "value", "hex"}, {}};
     for (const auto& d : words) {
         auto v = reader.u16("word data");
-        values.push_back({{"device", format_address(d)}, {"access", "word"}, {"value", v}});
-        table.rows.push_back({format_address(d), "word", std::to_string(v), word_hex(v, 4)});
+        values.push_back({{"device", format_address(d, numbering)}, {"access", "word"}, {"value", v}});
+        table.rows.push_back({format_address(d, numbering), "word", std::to_string(v), word_hex(v, 4)});
     }
     for (const auto& d : dwords) {
         auto v = reader.u32("double-word data");
-        values.push_back({{"device", format_address(d)}, {"access", "dword"}, {"value", v}});
-        table.rows.push_back({format_address(d), "dword", std::to_string(v), word_hex(v, 8)});
+        values.push_back({{"device", format_address(d, numbering)}, {"access", "dword"}, {"value", v}});
+        table.rows.push_back({format_address(d, numbering), "dword", std::to_string(v), word_hex(v, 8)});
     }
     if (!reader.finish()) throw ConnectionError("the random read data does not match the devices requested");
     in.output.result(Json{{"values", values}}, table);
 }
 
 void random_write(Invocation& in, const std::vector<std::string>& items) {
+    const auto numbering = in.client.frame().numbering;
     Json written = Json::array();
     auto note = [&](const DeviceAddress& device, const char* access, std::uint32_t value) {
-        written.push_back({{"device", format_address(device)}, {"access", access}, {"value", value}});
+        written.push_back({{"device", format_address(device, numbering)}, {"access", access}, {"value", value}});
     };
     std::vector<std::uint8_t> request;
     if (in.options.bits) {
@@ -63,7 +65,7 @@ void random_write(Invocation& in, const std::vector<std::string>& items) {
         std::vector<client::BitWrite> bits;
         for (const auto& item : items) {
             auto a = parse_assignment(item);
-            auto device = parse_device(a.device);
+            auto device = parse_device(a.device, numbering);
             if (!is_bit_device(device)) throw UsageError(a.device + " is a word device; --bits writes bit devices");
             bits.push_back({device, parse_bit(a.value)});
             note(device, "bit", bits.back().on ? 1 : 0);
@@ -76,12 +78,12 @@ void random_write(Invocation& in, const std::vector<std::string>& items) {
         std::vector<client::DwordWrite> dwords;
         for (const auto& item : items) {
             auto a = parse_assignment(item);
-            words.push_back({parse_device(a.device), parse_word(a.value)});
+            words.push_back({parse_device(a.device, numbering), parse_word(a.value)});
             note(words.back().device, "word", words.back().value);
         }
         for (const auto& item : in.options.dwords) {
             auto a = parse_assignment(item);
-            dwords.push_back({parse_device(a.device), parse_dword(a.value)});
+            dwords.push_back({parse_device(a.device, numbering), parse_dword(a.value)});
             note(dwords.back().device, "dword", dwords.back().value);
         }
         if (words.empty() && dwords.empty())

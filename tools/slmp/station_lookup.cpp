@@ -13,7 +13,8 @@ namespace asio = boost::asio;
 namespace beast = boost::beast;
 namespace bhttp = boost::beast::http;
 
-void look_up_station(Target& target, const std::string& name, std::uint16_t api_port) {
+void look_up_station(Target& target, devicemodel::Numbering& numbering, const std::string& name,
+                     std::uint16_t api_port) {
     asio::io_context io;
     bhttp::response<bhttp::string_body> response;
     std::exception_ptr failure;
@@ -56,6 +57,7 @@ void look_up_station(Target& target, const std::string& name, std::uint16_t api_
     target.port = ports[0].get<std::uint16_t>();
     auto bind = body.value("bind", std::string());
     if (!bind.empty() && bind != "0.0.0.0" && bind != "::") target.host = bind;
+    if (body.value("xy_radix", 16) == 8) numbering.xy = devicemodel::Radix::Oct;
 }
 
 }  // namespace slmp::cli
