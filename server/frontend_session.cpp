@@ -26,7 +26,7 @@ FrontEndSession::FrontEndSession(asio::ip::tcp::socket socket, station::Station&
 }
 
 void FrontEndSession::start() {
-    spdlog::info("{}: {} connected (connection {})", protocol_, peer_.text(), id_);
+    station_.log().info("{}: {} connected (connection {})", protocol_, peer_.text(), id_);
     last_activity_ = std::chrono::steady_clock::now();
     auto self = shared_from_this();
     std::weak_ptr<FrontEndSession> weak = self;
@@ -53,7 +53,7 @@ void FrontEndSession::finish() {
     if (closed_) return;
     closed_ = true;
     close();
-    spdlog::info("{}: {} disconnected (connection {}): {}", protocol_, peer_.text(), id_, close_reason_);
+    station_.log().info("{}: {} disconnected (connection {}): {}", protocol_, peer_.text(), id_, close_reason_);
     station_.activity().closed(id_, close_reason_);
     on_closed_(this);
 }

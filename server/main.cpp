@@ -10,6 +10,7 @@
 #include "server/check_config.hpp"
 #include "server/options.hpp"
 #include "server/server.hpp"
+#include "station/station_log.hpp"
 
 namespace {
 
@@ -37,7 +38,7 @@ int main(int argc, char** argv) {
             std::cout << "slmp-sim: configuration OK\n";
             return 0;
         }
-        spdlog::set_pattern("%Y-%m-%d %H:%M:%S.%e %^%-5l%$ %v");
+        spdlog::set_pattern(std::string(slmp::station::kLogLineHead) + "%v");
         slmp::server::Server server(cl.plant);
         server.run();
         return 0;

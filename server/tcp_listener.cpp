@@ -39,7 +39,7 @@ asio::awaitable<void> TcpListener::accept_loop() {
         auto socket = co_await acceptor_.async_accept(asio::redirect_error(asio::use_awaitable, ec));
         if (ec) {
             if (ec == asio::error::operation_aborted || !acceptor_.is_open()) co_return;
-            spdlog::warn("TCP port {}: accept failed: {}", port(), ec.message());
+            station_.log().warn("TCP port {}: accept failed: {}", port(), ec.message());
             continue;
         }
         if (over_address_cap(socket)) continue;   // the socket closes as it goes out of scope
@@ -49,7 +49,7 @@ asio::awaitable<void> TcpListener::accept_loop() {
         if (config_.max_connections_per_address > 0) ++sessions_per_address_[session->peer().address];
         session->start();
         if (sessions_.size() >= *config_.max_connections) {
-            spdlog::info("TCP port {}: {} of {} connection(s) in use; refusing new clients until one leaves", port(),
+            station_.log().info("TCP port {}: {} of {} connection(s) in use; refusing new clients until one leaves", port(),
                          sessions_.size(), *config_.max_connections);
             acceptor_.close(ec);
             co_return;
@@ -65,7 +65,7 @@ bool TcpListener::over_address_cap(const tcp::socket& socket) const {
     auto address = remote.address().to_string();
     auto found = sessions_per_address_.find(address);
     if (found == sessions_per_address_.end() || found->second < config_.max_connections_per_address) return false;
-    spdlog::warn("TCP port {}: {} already has {} connection(s), the per-address limit; closing its new connection",
+    station_.log().warn("TCP port {}: {} already has {} connection(s), the per-address limit; closing its new connection",
                  port(), address, found->second);
     return true;
 }
@@ -83,9 +83,9 @@ void TcpListener::session_closed(StreamSession* session) {
 void TcpListener::reopen() {
     try {
         listen();
-        spdlog::info("TCP port {}: accepting clients again", port());
+        station_.log().info("TCP port {}: accepting clients again", port());
     } catch (const std::exception& e) {
-        spdlog::error("TCP port {}: cannot listen again: {}", port(), e.what());
+        station_.log().error("TCP port {}: cannot listen again: {}", port(), e.what());
     }
 }
 

@@ -47,7 +47,7 @@ TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Station& station, 
 }
 
 void TcpSession::start() {
-    spdlog::info("{} connected (connection {})", peer_.text(), session_.id);
+    station_.log().info("{} connected (connection {})", peer_.text(), session_.id);
     last_activity_ = std::chrono::steady_clock::now();
     auto self = shared_from_this();
     std::weak_ptr<TcpSession> weak = self;
@@ -92,7 +92,7 @@ void TcpSession::finish(const std::string& why) {
     if (closed_) return;
     closed_ = true;
     close();
-    spdlog::info("{} disconnected (connection {}): {}", peer_.text(), session_.id, why);
+    station_.log().info("{} disconnected (connection {}): {}", peer_.text(), session_.id, why);
     station_.activity().closed(session_.id, why);
     on_closed_(this);
 }
@@ -265,7 +265,7 @@ awaitable<void> TcpSession::watch_deadlines() {
                 close_reason_ = "a started frame was not whole " + std::to_string(partial_frame_timeout_.count()) +
                                 " ms after its first byte (partial-frame timeout; " + std::to_string(pending_bytes_) +
                                 " byte(s) pending)";
-                spdlog::warn("{} connection {}: {}", peer_.text(), session_.id, close_reason_);
+                station_.log().warn("{} connection {}: {}", peer_.text(), session_.id, close_reason_);
             } else {
                 close_reason_ = "idle for " + std::to_string(idle_timeout_.count()) + " ms (idle timeout)";
             }

@@ -37,7 +37,7 @@ asio::awaitable<void> UdpListener::serve() {
                                                      asio::redirect_error(asio::use_awaitable, ec));
         if (ec) {
             if (ec == asio::error::operation_aborted || !socket_.is_open()) co_return;
-            spdlog::debug("UDP port {}: receive failed: {}", port_, ec.message());
+            station_.log().debug("UDP port {}: receive failed: {}", port_, ec.message());
             continue;
         }
         auto input = std::span<const std::uint8_t>(datagram.data(), n);
@@ -86,12 +86,12 @@ asio::awaitable<void> UdpListener::answer(std::span<const std::uint8_t> input, u
     auto handled = station_.handle(input, policy_, session_, peer, service);
     auto& outcome = handled.outcome;
     if (outcome.action == Outcome::Action::NeedMore) {
-        spdlog::debug("{} datagram of {} byte(s) holds no whole request frame (check the request data length); "
+        station_.log().debug("{} datagram of {} byte(s) holds no whole request frame (check the request data length); "
                       "not answered", peer.text(), n);
         co_return;
     }
     if (outcome.consumed < n)
-        spdlog::debug("{} {} byte(s) after the request frame ignored", peer.text(), n - outcome.consumed);
+        station_.log().debug("{} {} byte(s) after the request frame ignored", peer.text(), n - outcome.consumed);
     // Remember who spoke, for Ondemand pushes; bounded, so a flood of
     // source ports cannot grow it without end (later peers are not pushed to).
     if (outcome.command != 0 && (peers_.size() < kMaxPushPeers || peers_.count(sender))) {
@@ -102,7 +102,7 @@ asio::awaitable<void> UdpListener::answer(std::span<const std::uint8_t> input, u
     if (outcome.action != Outcome::Action::Respond) co_return;
     boost::system::error_code ec;
     co_await send_datagrams(socket_, sender, outcome.response, handled.delivery, ec);
-    if (ec) spdlog::debug("{} send failed: {}", peer.text(), ec.message());
+    if (ec) station_.log().debug("{} send failed: {}", peer.text(), ec.message());
 }
 
 void UdpListener::restart_session() {

@@ -16,8 +16,9 @@ constexpr std::string_view kFormat = "slmp-sim drives 1";
 
 }  // namespace
 
-DriveState::DriveState(const std::filesystem::path& dir, devicemodel::DriveSet& drives, std::string profile)
-    : drives_(drives), profile_(std::move(profile)), store_(dir, "drives.json") {
+DriveState::DriveState(const std::filesystem::path& dir, devicemodel::DriveSet& drives, std::string profile,
+                       spdlog::logger& log)
+    : drives_(drives), profile_(std::move(profile)), log_(log), store_(dir, "drives.json") {
     for (const auto& view : drives_.drives())
         if (!view.spec.alias_of) configured_[view.spec.number] = {view.spec.present, view.spec.write_protect};
 }
@@ -31,7 +32,7 @@ void DriveState::restore() {
         if (doc.at("format").get<std::string>() != kFormat)
             throw config::ConfigError("state directory: " + store_.file().string() + " is not a drives memo" + fix);
         if (doc.at("profile").get<std::string>() != profile_)
-            spdlog::warn("state directory: {} was saved with profile {}; drives this CPU lacks are skipped",
+            log_.warn("state directory: {} was saved with profile {}; drives this CPU lacks are skipped",
                          store_.file().string(), doc.at("profile").get<std::string>());
         for (const auto& item : doc.at("drives")) {
             devicemodel::DriveMemo memo;
@@ -51,7 +52,7 @@ void DriveState::restore() {
     } catch (const json::exception& e) {
         throw config::ConfigError("state directory: " + store_.file().string() + " cannot be read: " + e.what() + fix);
     }
-    spdlog::info("state directory: file Nos., attributes and drive switches restored from {}", store_.file().string());
+    log_.info("state directory: file Nos., attributes and drive switches restored from {}", store_.file().string());
 }
 
 bool DriveState::save() {
@@ -70,7 +71,7 @@ bool DriveState::save() {
         store_.save(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
         return true;
     } catch (const std::exception& e) {
-        spdlog::error("state directory: saving the drives memo failed: {}", e.what());
+        log_.error("state directory: saving the drives memo failed: {}", e.what());
         return false;
     }
 }

@@ -13,6 +13,7 @@
 
 #include "devicemodel/drives.hpp"
 #include "station/state_store.hpp"
+#include "station/station_log.hpp"
 
 namespace slmp::station {
 
@@ -20,7 +21,7 @@ class DriveState {
 public:
     // Remembers the switches as configured, to tell a changed configuration
     // from a restart (throws config::ConfigError when the directory is unusable).
-    DriveState(const std::filesystem::path& dir, devicemodel::DriveSet& drives, std::string profile);
+    DriveState(const std::filesystem::path& dir, devicemodel::DriveSet& drives, std::string profile, spdlog::logger& log);
 
     // Loads the memo if there is one. A damaged file stops the start
     // (ConfigError) rather than silently renumbering the files.
@@ -31,6 +32,7 @@ public:
 private:
     devicemodel::DriveSet& drives_;
     std::string profile_;
+    spdlog::logger& log_;
     StateStore store_;
     // Drive -> {present, write_protect} as the configuration set them.
     std::map<std::uint16_t, std::pair<bool, bool>> configured_;

@@ -35,7 +35,7 @@ FrontEndCall::Delivery FrontEndCall::finish(std::span<const std::uint8_t> reques
     delivery.delay = std::chrono::microseconds(static_cast<std::int64_t>(plan_.decision.delay_ms * 1000));
     const auto protocol = scenarios::to_string(protocol_);
     if (!plan_.decision.fired.empty())
-        spdlog::debug("{} {}: {} {}: scenario fault(s) fired", protocol, peer_.text(), command, plan_.decision.fired.size());
+        station_.log().debug("{} {}: {} {}: scenario fault(s) fired", protocol, peer_.text(), command, plan_.decision.fired.size());
     FrontEndRecord record{protocol,  connection_, peer_,    command,  known,
                           name,      code,        delivery.close || delivery.reset,
                           request,   response,    std::chrono::steady_clock::now() - started_,

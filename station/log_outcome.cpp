@@ -18,29 +18,29 @@ const protocol::CommandSpec* operator_row(std::uint16_t command) {
 
 }  // namespace
 
-void log_outcome(const protocol::Peer& client, const protocol::Outcome& outcome) {
+void log_outcome(spdlog::logger& log, const protocol::Peer& client, const protocol::Outcome& outcome) {
     // This runs for every request: an ordinary one is only a trace line, so the
     // peer's text is not built for it unless tracing.
     const auto* operation = operator_row(outcome.command);
     const bool ordinary = outcome.note.empty() && !operation;
-    if (ordinary && !spdlog::should_log(spdlog::level::trace)) return;
+    if (ordinary && !log.should_log(spdlog::level::trace)) return;
     const auto peer = client.text();
     if (operation && outcome.action != protocol::Outcome::Action::NeedMore) {
         if (outcome.end_code == protocol::EndCode::Ok && outcome.note.empty())
-            spdlog::info("{} {:04X} ({}) done", peer, outcome.command, operation->name);
+            log.info("{} {:04X} ({}) done", peer, outcome.command, operation->name);
         else
-            spdlog::warn("{} {:04X} refused: {}", peer, outcome.command, outcome.note);
+            log.warn("{} {:04X} refused: {}", peer, outcome.command, outcome.note);
         return;
     }
     if (outcome.note.empty()) {
-        spdlog::trace("{} {:04X}/{:04X} ok, {} byte(s) in, {} byte(s) out", peer, outcome.command, outcome.subcommand,
+        log.trace("{} {:04X}/{:04X} ok, {} byte(s) in, {} byte(s) out", peer, outcome.command, outcome.subcommand,
                       outcome.consumed, outcome.response.size());
         return;
     }
     if (outcome.command == 0 && outcome.subcommand == 0)
-        spdlog::debug("{} {}", peer, outcome.note);
+        log.debug("{} {}", peer, outcome.note);
     else
-        spdlog::debug("{} {:04X}/{:04X} rejected: {}", peer, outcome.command, outcome.subcommand, outcome.note);
+        log.debug("{} {:04X}/{:04X} rejected: {}", peer, outcome.command, outcome.subcommand, outcome.note);
 }
 
 }  // namespace slmp::station

@@ -4,9 +4,10 @@
 
 #include "protocol/engine.hpp"
 #include "protocol/peer.hpp"
+#include "station/station_log.hpp"
 
 namespace slmp::station {
 
-void log_outcome(const protocol::Peer& peer, const protocol::Outcome& outcome);
+void log_outcome(spdlog::logger& log, const protocol::Peer& peer, const protocol::Outcome& outcome);
 
 }  // namespace slmp::station

@@ -10,8 +10,10 @@ namespace slmp::station {
 
 namespace asio = boost::asio;
 
-Persistence::Persistence(asio::io_context& io, devicemodel::Cpu& cpu, const config::PersistenceConfig& config)
+Persistence::Persistence(asio::io_context& io, devicemodel::Cpu& cpu, const config::PersistenceConfig& config,
+                         spdlog::logger& log)
     : cpu_(cpu),
+      log_(log),
       store_(config.state_dir),
       units_store_(config.state_dir, "units.bin"),
       interval_(static_cast<std::int64_t>(config.snapshot_interval_s * 1000)),
@@ -21,7 +23,7 @@ Persistence::Persistence(asio::io_context& io, devicemodel::Cpu& cpu, const conf
 void Persistence::restore() {
     auto bytes = store_.load();
     if (!bytes) {
-        spdlog::info("state directory: no snapshot yet at {}; starting with fresh device memory", store_.file().string());
+        log_.info("state directory: no snapshot yet at {}; starting with fresh device memory", store_.file().string());
         return;
     }
     auto scope = restore_all_ ? devicemodel::RestoreScope::All : devicemodel::RestoreScope::Latched;
@@ -29,8 +31,8 @@ void Persistence::restore() {
     if (!result.ok)
         throw config::ConfigError("state directory: " + store_.file().string() + " cannot be restored: " + result.error +
                                   "; start with the profile it was saved with, or move the file away to start afresh");
-    for (const auto& w : result.warnings) spdlog::warn("state directory: {}", w);
-    spdlog::info("state directory: restored {} devices from {}", restore_all_ ? "all" : "latched",
+    for (const auto& w : result.warnings) log_.warn("state directory: {}", w);
+    log_.info("state directory: restored {} devices from {}", restore_all_ ? "all" : "latched",
                  store_.file().string());
 }
 
@@ -40,11 +42,11 @@ bool Persistence::save(std::string_view why) {
         store_.save(devicemodel::encode_snapshot(cpu_.memory(), cpu_.profile().name));
         if (units)
             if (auto bytes = units()) units_store_.save(*bytes);
-        spdlog::debug("state directory: snapshot saved ({}) in {} ms", why,
+        log_.debug("state directory: snapshot saved ({}) in {} ms", why,
                       std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - started).count());
         return true;
     } catch (const std::exception& e) {
-        spdlog::error("state directory: snapshot ({}) failed: {}", why, e.what());
+        log_.error("state directory: snapshot ({}) failed: {}", why, e.what());
         return false;
     }
 }

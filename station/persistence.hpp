@@ -15,13 +15,15 @@
 #include "config/config.hpp"
 #include "devicemodel/cpu.hpp"
 #include "station/state_store.hpp"
+#include "station/station_log.hpp"
 
 namespace slmp::station {
 
 class Persistence {
 public:
     // Throws config::ConfigError when the directory cannot be used.
-    Persistence(boost::asio::io_context& io, devicemodel::Cpu& cpu, const config::PersistenceConfig& config);
+    Persistence(boost::asio::io_context& io, devicemodel::Cpu& cpu, const config::PersistenceConfig& config,
+                spdlog::logger& log);
 
     // Loads the snapshot if there is one. A damaged or foreign snapshot stops the
     // start (ConfigError) rather than silently starting from empty memory.
@@ -42,6 +44,7 @@ private:
     boost::asio::awaitable<void> every_interval();
 
     devicemodel::Cpu& cpu_;
+    spdlog::logger& log_;
     StateStore store_;
     StateStore units_store_;
     std::chrono::milliseconds interval_;

@@ -11,14 +11,6 @@ using protocol::Outcome;
 
 namespace {
 
-void log_event(scenarios::EventLevel level, const std::string& line) {
-    switch (level) {
-        case scenarios::EventLevel::Debug: spdlog::debug("scenario: {}", line); break;
-        case scenarios::EventLevel::Info: spdlog::info("scenario: {}", line); break;
-        case scenarios::EventLevel::Warn: spdlog::warn("scenario: {}", line); break;
-    }
-}
-
 std::string joined(const std::vector<std::string>& names) {
     std::string text;
     for (const auto& n : names) text += (text.empty() ? "'" : ", '") + n + "'";
@@ -29,13 +21,23 @@ std::string joined(const std::vector<std::string>& names) {
 
 ScenarioHook::~ScenarioHook() = default;
 
+scenarios::EventSink ScenarioHook::event_sink() const {
+    return [log = log_](scenarios::EventLevel level, const std::string& line) {
+        switch (level) {
+            case scenarios::EventLevel::Debug: log->debug("scenario: {}", line); break;
+            case scenarios::EventLevel::Info: log->info("scenario: {}", line); break;
+            case scenarios::EventLevel::Warn: log->warn("scenario: {}", line); break;
+        }
+    };
+}
+
 void ScenarioHook::start(std::vector<scenarios::Scenario> list, devicemodel::Cpu& cpu, scenarios::Station& station) {
     for (const auto& s : list)
-        spdlog::info("scenario '{}' ({}): {} step(s), {} trigger(s), {} rung(s), {} fault(s){}", s.name, s.source,
+        log_->info("scenario '{}' ({}): {} step(s), {} trigger(s), {} rung(s), {} fault(s){}", s.name, s.source,
                      s.timeline.steps.size(), s.triggers.size(), s.logic.rungs.size(), s.faults.size(),
                      s.replay ? ", replaying " + s.replay->file : "");
     attach(cpu, station);
-    runners_.add(std::move(list), cpu, log_event, &station);
+    runners_.add(std::move(list), cpu, event_sink(), &station);
 }
 
 void ScenarioHook::attach(devicemodel::Cpu& cpu, scenarios::Station& station) {
@@ -54,8 +56,8 @@ void ScenarioHook::load(scenarios::Scenario s) {
                                s.source, s.timeline.steps.size(), s.triggers.size(), s.logic.rungs.size(), s.faults.size());
     std::vector<scenarios::Scenario> list;
     list.push_back(std::move(s));
-    runners_.add(std::move(list), *cpu_, log_event, station_);
-    spdlog::info("{}", summary);
+    runners_.add(std::move(list), *cpu_, event_sink(), station_);
+    log_->info("{}", summary);
     config::apply_initial_values(*cpu_, initial.devices);
     if (initial.run_switch) cpu_->runtime().set_switch(cpu_->memory(), *initial.run_switch);
     if (initial.error) cpu_->runtime().raise_error(cpu_->memory(), *initial.error);
@@ -64,12 +66,12 @@ void ScenarioHook::load(scenarios::Scenario s) {
 void ScenarioHook::replace_scenarios(std::vector<std::vector<scenarios::Scenario>> groups) {
     runners_.clear(station_);
     if (!cpu_) return;
-    for (auto& group : groups) runners_.add(std::move(group), *cpu_, log_event, station_);
+    for (auto& group : groups) runners_.add(std::move(group), *cpu_, event_sink(), station_);
 }
 
 bool ScenarioHook::stop(const std::string& name) {
-    if (!cpu_ || !runners_.remove(name, *cpu_, log_event, station_)) return false;
-    spdlog::info("scenario '{}' stopped", name);
+    if (!cpu_ || !runners_.remove(name, *cpu_, event_sink(), station_)) return false;
+    log_->info("scenario '{}' stopped", name);
     return true;
 }
 
@@ -79,13 +81,13 @@ void ScenarioHook::record(const std::string& file, const std::string& profile) {
     recorders_.push_back(std::make_unique<scenarios::RecordingWriter>(file, profile, std::chrono::steady_clock::now()));
     recording_ = recorders_.back().get();
     recording_file_ = file;
-    spdlog::info("recording every request and response to {}", file);
+    log_->info("recording every request and response to {}", file);
 }
 
 bool ScenarioHook::stop_recording() {
     if (!recording_) return false;
     std::erase_if(recorders_, [&](const auto& r) { return r.get() == recording_; });   // closes the file
-    spdlog::info("recording to {} stopped", recording_file_);
+    log_->info("recording to {} stopped", recording_file_);
     recording_ = nullptr;
     recording_file_.clear();
     return true;
@@ -94,7 +96,7 @@ bool ScenarioHook::stop_recording() {
 void ScenarioHook::record_pcap(const std::string& file, const std::string& bind) {
     recorders_.push_back(std::make_unique<scenarios::PcapWriter>(file, bind, std::chrono::steady_clock::now(),
                                                                  std::chrono::system_clock::now()));
-    spdlog::info("capturing every request and response to {} (pcap)", file);
+    log_->info("capturing every request and response to {} (pcap)", file);
 }
 
 scenarios::Plan ScenarioHook::before(scenarios::Incoming& incoming, std::span<const std::uint8_t> input,
@@ -169,7 +171,7 @@ std::vector<scenarios::FaultStats> ScenarioHook::fault_stats() const {
 
 void ScenarioHook::log_summary() const {
     for (const auto& f : fault_stats())
-        if (f.matched > 0) spdlog::info("scenario: fault '{}' ({}) matched {} request(s), fired {} time(s)", f.name, f.kind, f.matched, f.fired);
+        if (f.matched > 0) log_->info("scenario: fault '{}' ({}) matched {} request(s), fired {} time(s)", f.name, f.kind, f.matched, f.fired);
 }
 
 void ScenarioHook::on_opened(const Connection& c) {

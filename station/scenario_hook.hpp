@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "station/station_log.hpp"
 #include "protocol/engine.hpp"
 #include "protocol/peer.hpp"
 #include "scenarios/faults.hpp"
@@ -38,6 +39,8 @@ class ScenarioHook : public ActivityObserver {
 public:
     ScenarioHook() = default;
     ~ScenarioHook();
+    // Where its lines go: the station's log (station_log.hpp).
+    void set_log(std::shared_ptr<spdlog::logger> log) { log_ = std::move(log); }
 
     // Scenarios start running against `cpu` (checks their devices; throws config::ConfigError).
     void start(std::vector<scenarios::Scenario> scenarios, devicemodel::Cpu& cpu, scenarios::Station& station);
@@ -97,6 +100,9 @@ public:
     void on_pushed(const PushRecord& push) override;   // recorded as an "ondemand" event
 
 private:
+    scenarios::EventSink event_sink() const;   // the runners' lines, into log_
+
+    std::shared_ptr<spdlog::logger> log_ = spdlog::default_logger();
     scenarios::RunnerSet runners_;
     devicemodel::Cpu* cpu_ = nullptr;              // attach()
     scenarios::Station* station_ = nullptr;

@@ -2,8 +2,6 @@
 
 #include <vector>
 
-#include <spdlog/spdlog.h>
-
 namespace slmp::station {
 
 void ScenarioStation::power_off() {
@@ -12,7 +10,7 @@ void ScenarioStation::power_off() {
     std::vector<std::uint64_t> ids;
     for (const auto& [id, _] : activity_.connections()) ids.push_back(id);
     for (auto id : ids) activity_.close(id, "power cut (scenario)");
-    spdlog::info("scenario: power off: {} connection(s) dropped, TCP ports closed", ids.size());
+    log_.info("scenario: power off: {} connection(s) dropped, TCP ports closed", ids.size());
 }
 
 void ScenarioStation::power_on() {

@@ -13,6 +13,7 @@
 
 #include "scenarios/runner.hpp"
 #include "station/activity.hpp"
+#include "station/station_log.hpp"
 #include "station/transports.hpp"
 
 namespace slmp::station {
@@ -20,8 +21,8 @@ namespace slmp::station {
 class ScenarioStation final : public scenarios::Station {
 public:
     using Ondemand = std::function<void(const scenarios::OndemandAction&, const std::string&)>;
-    ScenarioStation(Activity& activity, Transports& transports, Ondemand ondemand)
-        : activity_(activity), transports_(transports), ondemand_(std::move(ondemand)) {}
+    ScenarioStation(Activity& activity, Transports& transports, Ondemand ondemand, spdlog::logger& log)
+        : activity_(activity), transports_(transports), ondemand_(std::move(ondemand)), log_(log) {}
 
     void power_off() override;
     void power_on() override;
@@ -34,6 +35,7 @@ private:
     Activity& activity_;
     Transports& transports_;
     Ondemand ondemand_;
+    spdlog::logger& log_;
     bool off_ = false;
     bool refusing_ = false;
 };

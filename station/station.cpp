@@ -26,6 +26,8 @@ Station::Station(boost::asio::io_context& io, const config::ServerConfig& config
     // The scenario files' addresses follow this CPU (FX5: X/Y in octal).
     devicemodel::NumberingScope numbering(cpu_.profile().numbering);
     config_ = config;
+    log_ = station_logger(config_.name);
+    scenario_.set_log(log_);
     pending_scenarios_ = load_scenarios();   // their initial state joins config_ first
     config::apply_initial_values(cpu_, config_);
     config::attach_hardware(cpu_, config_);
@@ -60,9 +62,9 @@ void Station::start_cpu_runtime(boost::asio::io_context& io) {
     scan_ = std::make_unique<ScanLoop>(io, all_cpus(), cpu_.runtime().config().scan_time, config_.clock_speed,
                                        config_.clock_frozen);
     if (!config_.persistence.state_dir.empty()) {
-        persistence_ = std::make_unique<Persistence>(io, cpu_, config_.persistence);
+        persistence_ = std::make_unique<Persistence>(io, cpu_, config_.persistence, *log_);
         persistence_->restore();
-        drive_state_ = std::make_unique<DriveState>(config_.persistence.state_dir, cpu_.drives(), cpu_.profile().name);
+        drive_state_ = std::make_unique<DriveState>(config_.persistence.state_dir, cpu_.drives(), cpu_.profile().name, *log_);
         drive_state_->restore();
         cpu_.drives().set_on_change([this] { drive_state_->save(); });
     }
@@ -119,7 +121,7 @@ Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodeP
     scenario_.after(plan, handled, input, session, peer);
     const auto& outcome = handled.outcome;
     if (outcome.action == Outcome::Action::NeedMore) return handled;
-    log_outcome(peer, outcome);
+    log_outcome(*log_, peer, outcome);
     activity_.request({session.id, peer, input.first(outcome.consumed), incoming.request, outcome,
                        std::chrono::steady_clock::now() - started, modelled});
     return handled;
@@ -128,7 +130,7 @@ Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodeP
 // Remote RESET (slmp-labels-remote-misc.md §5.6): the CPU has restarted; as on
 // the real station every TCP connection drops and UDP sessions start afresh.
 void Station::restart() {
-    spdlog::info("Remote RESET: CPU restarted; closing every connection");
+    log_->info("Remote RESET: CPU restarted; closing every connection");
     std::vector<std::uint64_t> ids;
     for (const auto& [id, _] : activity_.connections()) ids.push_back(id);
     for (auto id : ids) activity_.close(id, "Remote RESET: the CPU restarted");

@@ -21,6 +21,7 @@
 #include "protocol/peer.hpp"
 #include "station/activity.hpp"
 #include "station/scenario_hook.hpp"
+#include "station/station_log.hpp"
 #include "station/transports.hpp"
 
 namespace slmp::hostlink { class HostLink; }
@@ -160,6 +161,8 @@ public:
     // Scenarios and recording: the one hook around the engine (station/scenario_hook.hpp).
     ScenarioHook& scenario() { return scenario_; }
     const ScenarioHook& scenario() const { return scenario_; }
+    // Its log: lines start with the station's name in a plant (station_log.hpp).
+    spdlog::logger& log() const { return *log_; }
     // Whether a scenario is for this station: it names no stations, this
     // station has no name (a lone station), or one of its patterns matches.
     bool runs(const scenarios::Scenario& s) const;
@@ -174,6 +177,7 @@ private:
     static protocol::Outcome timed_out(const protocol::Request& request, std::chrono::milliseconds timer);
 
     config::ServerConfig config_;   // with the scenarios' initial state joined
+    std::shared_ptr<spdlog::logger> log_ = spdlog::default_logger();
     devicemodel::Cpu cpu_;
     protocol::Engine engine_;
     std::vector<std::unique_ptr<devicemodel::Cpu>> other_cpus_;   // CPU No.2–4 of a multi-CPU system

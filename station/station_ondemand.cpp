@@ -45,7 +45,7 @@ std::vector<Station::Pushed> Station::ondemand(const scenarios::OndemandAction& 
         sent.push_back({target.session, target.peer, frame});
         target.send(std::move(frame));
     }
-    spdlog::info("Ondemand 2101 ({}): {} word(s) from {} to {} client(s)", why, words, name, sent.size());
+    log_->info("Ondemand 2101 ({}): {} word(s) from {} to {} client(s)", why, words, name, sent.size());
     return sent;
 }
 

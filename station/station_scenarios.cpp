@@ -39,10 +39,10 @@ void Station::start_scenarios(std::vector<scenarios::Scenario> list) {
             try {
                 this->ondemand(action, why);
             } catch (const config::ConfigError& e) {
-                spdlog::warn("scenario: {}: Ondemand not sent: {}", why, e.what());
+                log_->warn("scenario: {}: Ondemand not sent: {}", why, e.what());
             }
         };
-        scenario_station_ = std::make_unique<ScenarioStation>(activity_, *transports_, ondemand);
+        scenario_station_ = std::make_unique<ScenarioStation>(activity_, *transports_, ondemand, *log_);
         scenario_.attach(cpu_, *scenario_station_);
         if (!list.empty()) scenario_.start(std::move(list), cpu_, *scenario_station_);
         scan_->after_scan([this](std::chrono::steady_clock::time_point now) { scenario_.scanned(now); });

@@ -216,7 +216,7 @@ void Station::attach_frontends(FrontEnds frontends) {
     if (auto bytes = persistence_->load_units()) {
         const auto source = persistence_->units_file().string();
         give_units(decode_units(*bytes, source), frontends_);
-        spdlog::info("state directory: restored the front ends' unit state from {}", source);
+        log_->info("state directory: restored the front ends' unit state from {}", source);
     }
     persistence_->units = [this]() -> std::optional<std::vector<std::uint8_t>> {
         auto parts = take_units(frontends_);
@@ -237,7 +237,7 @@ void Station::take_initial_snapshot() {
                                        "by GET /api/snapshots/{name}/file");
     std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     restore(decode_station_file(bytes, config_.snapshot_file), false);
-    spdlog::info("snapshot: started from {}", config_.snapshot_file);
+    log_->info("snapshot: started from {}", config_.snapshot_file);
 }
 
 }  // namespace slmp::station

@@ -130,6 +130,26 @@ async function launchBrowser(browserPath, dir) {
 
 // ----------------------------------------------------------------- HTTP --
 
+// One simulator and one browser page for a test: starts slmp-sim with `args`
+// (or args(dir), for files written to its temporary directory first), opens
+// Chromium, runs body({page, pageErrors, ready, url, dir}) and always closes
+// both and removes the directory.
+async function withMonitor({ binary, browserPath, args }, body) {
+  const dir = tempDir();
+  const simulator = await startSim(binary, typeof args === 'function' ? args(dir) : args, dir);
+  let context;
+  try {
+    const browser = await launchBrowser(browserPath, dir);
+    context = browser.context;
+    const { ready } = simulator;
+    await body({ page: browser.page, pageErrors: browser.pageErrors, ready, url: `http://127.0.0.1:${ready.http}/`, dir });
+  } finally {
+    if (context) await context.close();
+    await stopSim(simulator);
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
 async function httpJson(url, method = 'GET', body = undefined) {
   const response = await fetch(url, body === undefined ? { method } : { method, body: JSON.stringify(body) });
   const data = await response.json();
@@ -213,5 +233,5 @@ class SlmpClient {
 
 module.exports = {
   WAIT_MS, parseArgs, check, fail, run, out, withTimeout, eventually, assertEqual,
-  tempDir, startSim, stopSim, launchBrowser, httpJson, SlmpClient,
+  tempDir, startSim, stopSim, launchBrowser, withMonitor, httpJson, SlmpClient,
 };

@@ -14,7 +14,7 @@
 const fs = require('fs');
 const path = require('path');
 const {
-  parseArgs, check, run, out, eventually, tempDir, startSim, stopSim, launchBrowser, SlmpClient,
+  parseArgs, check, run, out, eventually, withMonitor, SlmpClient,
 } = require('./harness');
 
 const { binary, screenshot: screenshotFile, browserPath } = parseArgs(process.argv);
@@ -44,21 +44,16 @@ const LABELS = {
 // --------------------------------------------------------------------- main --
 
 async function main() {
-  const dir = tempDir();
-  const scenarioFile = path.join(dir, 'scenario.json');
-  const labelsFile = path.join(dir, 'labels.json');
-  fs.writeFileSync(scenarioFile, JSON.stringify(SCENARIO));
-  fs.writeFileSync(labelsFile, JSON.stringify(LABELS));
-  const simulator = await startSim(binary, ['--tcp-port', '0', '--udp-port', '0', '--http-port', '0', '--bind', '127.0.0.1',
-    '--scenario', scenarioFile, '--labels', labelsFile], dir);
-  const ports = simulator.ready;
-  const url = `http://127.0.0.1:${ports.http}/`;
-  let context;
-  const slmp = new SlmpClient(ports.tcp[0]);
-  try {
-    const browser = await launchBrowser(browserPath, dir);
-    context = browser.context;
-    const { page, pageErrors } = browser;
+  const args = (dir) => {
+    const scenarioFile = path.join(dir, 'scenario.json');
+    const labelsFile = path.join(dir, 'labels.json');
+    fs.writeFileSync(scenarioFile, JSON.stringify(SCENARIO));
+    fs.writeFileSync(labelsFile, JSON.stringify(LABELS));
+    return ['--tcp-port', '0', '--udp-port', '0', '--http-port', '0', '--bind', '127.0.0.1',
+      '--scenario', scenarioFile, '--labels', labelsFile];
+  };
+  await withMonitor({ binary, browserPath, args }, async ({ page, pageErrors, ready, url }) => {
+    const slmp = new SlmpClient(ready.tcp[0]);
 
     await check('the monitor loads and names the CPU', async () => {
       await page.goto(url);
@@ -197,12 +192,8 @@ async function main() {
       await page.screenshot({ path: screenshotFile, fullPage: true });
       out(`screenshot written to ${screenshotFile}`);
     }
-  } finally {
     slmp.close();
-    if (context) await context.close();
-    await stopSim(simulator);
-    fs.rmSync(dir, { recursive: true, force: true });
-  }
+  });
 }
 
 run(main);

@@ -7,25 +7,14 @@
 // Usage: node octal_test.js [path/to/slmp-sim]   (as monitor_test.js)
 'use strict';
 
-const fs = require('fs');
-const {
-  parseArgs, check, run, tempDir, startSim, stopSim, launchBrowser, SlmpClient,
-} = require('./harness');
+const { parseArgs, check, run, withMonitor, SlmpClient } = require('./harness');
 
 const { binary, browserPath } = parseArgs(process.argv);
+const args = ['--profile', 'FX5U-32MR', '--tcp-port', '0', '--udp-port', '0', '--http-port', '0', '--bind', '127.0.0.1'];
 
-async function main() {
-  const dir = tempDir();
-  const simulator = await startSim(binary, ['--profile', 'FX5U-32MR', '--tcp-port', '0', '--udp-port', '0',
-    '--http-port', '0', '--bind', '127.0.0.1'], dir);
-  const url = `http://127.0.0.1:${simulator.ready.http}/`;
-  const slmp = new SlmpClient(simulator.ready.tcp[0]);
-  let context;
+run(() => withMonitor({ binary, browserPath, args }, async ({ page, pageErrors, ready, url }) => {
+  const slmp = new SlmpClient(ready.tcp[0]);
   try {
-    const browser = await launchBrowser(browserPath, dir);
-    context = browser.context;
-    const { page, pageErrors } = browser;
-
     await check('the monitor loads an FX5U', async () => {
       await page.goto(url);
       await page.waitForFunction(() => document.querySelector('#cpu').textContent.includes('FX5U-32MR'));
@@ -58,7 +47,7 @@ async function main() {
       await page.fill('#watch-input', 'X8');
       await page.click('#watch-add');
       await page.waitForFunction(() => document.querySelector('#message').textContent.includes(
-        "X is numbered in octal on this CPU: X7 is followed by X10"));
+        'X is numbered in octal on this CPU: X7 is followed by X10'));
     });
 
     await check('the page raised no script errors', async () => {
@@ -66,10 +55,5 @@ async function main() {
     });
   } finally {
     slmp.close();
-    if (context) await context.close();
-    await stopSim(simulator);
-    fs.rmSync(dir, { recursive: true, force: true });
   }
-}
-
-run(main);
+}));

@@ -16,7 +16,7 @@
 const fs = require('fs');
 const path = require('path');
 const {
-  parseArgs, check, run, out, eventually, assertEqual, tempDir, startSim, stopSim, launchBrowser, httpJson, SlmpClient,
+  parseArgs, check, run, out, eventually, assertEqual, withMonitor, httpJson, SlmpClient,
 } = require('./harness');
 
 const { binary, screenshot: screenshotFile, browserPath } = parseArgs(process.argv);
@@ -24,19 +24,15 @@ const { binary, screenshot: screenshotFile, browserPath } = parseArgs(process.ar
 const PLANT = { bind: '127.0.0.1', http: { port: 0 }, stations: [{ template: {}, count: 3, name: 'p{i}', tcp_port: 0 }] };
 
 async function main() {
-  const dir = tempDir();
-  const configFile = path.join(dir, 'plant.json');
-  fs.writeFileSync(configFile, JSON.stringify(PLANT));
-  const simulator = await startSim(binary, ['--config', configFile, '--threads', '2'], dir);
-  const { ready } = simulator;
-  const base = `http://127.0.0.1:${ready.http}`;
-  const tcpPort = (name) => ready.stations.find((s) => s.name === name).tcp[0];
-  let context;
-  const p2 = new SlmpClient(tcpPort('p2'));
-  try {
-    const browser = await launchBrowser(browserPath, dir);
-    context = browser.context;
-    const { page, pageErrors } = browser;
+  const args = (dir) => {
+    const configFile = path.join(dir, 'plant.json');
+    fs.writeFileSync(configFile, JSON.stringify(PLANT));
+    return ['--config', configFile, '--threads', '2'];
+  };
+  await withMonitor({ binary, browserPath, args }, async ({ page, pageErrors, ready }) => {
+    const base = `http://127.0.0.1:${ready.http}`;
+    const tcpPort = (name) => ready.stations.find((s) => s.name === name).tcp[0];
+    const p2 = new SlmpClient(tcpPort('p2'));
 
     const rowTexts = () => page.evaluate(() => [...document.querySelectorAll('#stations tbody tr')]
       .filter((row) => !row.hidden).map((row) => row.dataset.station));
@@ -185,12 +181,8 @@ async function main() {
       await load;
       out(`screenshot written to ${screenshotFile}`);
     }
-  } finally {
     p2.close();
-    if (context) await context.close();
-    await stopSim(simulator);
-    fs.rmSync(dir, { recursive: true, force: true });
-  }
+  });
 }
 
 run(main);

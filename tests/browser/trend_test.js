@@ -16,7 +16,7 @@
 const fs = require('fs');
 const path = require('path');
 const {
-  parseArgs, check, run, out, assertEqual, tempDir, startSim, stopSim, launchBrowser, httpJson,
+  parseArgs, check, run, out, assertEqual, withMonitor, httpJson,
 } = require('./harness');
 
 const { binary, screenshot: screenshotFile, browserPath } = parseArgs(process.argv);
@@ -33,18 +33,14 @@ const LABELS = {
 const runs = (column) => column.filter((v, i) => v !== null && v !== column[i - 1]);
 
 async function main() {
-  const dir = tempDir();
-  const labelsFile = path.join(dir, 'labels.json');
-  fs.writeFileSync(labelsFile, JSON.stringify(LABELS));
-  const simulator = await startSim(binary, ['--tcp-port', '0', '--udp-port', '0', '--http-port', '0', '--bind', '127.0.0.1',
-    '--labels', labelsFile], dir);
-  const base = `http://127.0.0.1:${simulator.ready.http}`;
-  const put = (device, value) => httpJson(`${base}/api/devices/${device}`, 'PUT', { values: [value] });
-  let context;
-  try {
-    const browser = await launchBrowser(browserPath, dir);
-    context = browser.context;
-    const { page, pageErrors } = browser;
+  const args = (dir) => {
+    const labelsFile = path.join(dir, 'labels.json');
+    fs.writeFileSync(labelsFile, JSON.stringify(LABELS));
+    return ['--tcp-port', '0', '--udp-port', '0', '--http-port', '0', '--bind', '127.0.0.1', '--labels', labelsFile];
+  };
+  await withMonitor({ binary, browserPath, args }, async ({ page, pageErrors, ready }) => {
+    const base = `http://127.0.0.1:${ready.http}`;
+    const put = (device, value) => httpJson(`${base}/api/devices/${device}`, 'PUT', { values: [value] });
 
     const trend = () => page.evaluate(() => ({
       series: window.__trend.series.map((s) => s.name),
@@ -197,11 +193,7 @@ async function main() {
       await page.locator('section.trend').screenshot({ path: screenshotFile });
       out(`screenshot written to ${screenshotFile}`);
     }
-  } finally {
-    if (context) await context.close();
-    await stopSim(simulator);
-    fs.rmSync(dir, { recursive: true, force: true });
-  }
+  });
 }
 
 run(main);

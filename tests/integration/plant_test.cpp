@@ -415,3 +415,20 @@ TEST_CASE("plant: a scenario file whose stations match none of the plant is a co
     CHECK(checked.exit_code == 2);
     CHECK(checked.err.find(typo.string() + ": /stations: no station of the plant is named \"pres-*\"") != std::string::npos);
 }
+
+TEST_CASE("plant: each station's log lines start with its name", "[plant][logs]") {
+    auto options = plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0}, "log_level": "info",
+        "stations": [{"template": {}, "count": 2, "name": "press-{i}", "tcp_port": 0}]})");
+    options.default_log_level = true;
+    SimProcess sim(options);
+    {
+        auto press2 = TcpClient::open(tcp_of(sim, "press-2"));
+        CHECK(show(ask(press2, kReadD100)) == show(read_answer(0)));
+    }
+    auto logs = sim.logs();
+    INFO(logs);
+    // The connection's line names press-2 (it is written before the request is read); press-1 has none.
+    CHECK(logs.find("press-2: tcp:127.0.0.1:") != std::string::npos);
+    CHECK(logs.find(" connected (connection 1)") != std::string::npos);
+    CHECK(logs.find("press-1: tcp:") == std::string::npos);
+}
