@@ -392,7 +392,7 @@ TEST_CASE("plant: scenario files name their stations; one list places each where
                            R"({"scenario": {"name": "p2", "stations": "*-2", "initial": {"devices": {"D1": 5}}}})");
         INFO(posted.body);
         CHECK(posted.status == 201);
-        CHECK(posted.json()["stations"] == nlohmann::json({"press-2"}));
+        CHECK(posted.json()["stations"] == nlohmann::json::array({"press-2"}));
         CHECK(words("press-2") == nlohmann::json({7, 5}));
         CHECK(words("press-1") == nlohmann::json({7, 1}));
     }
