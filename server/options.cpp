@@ -169,7 +169,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("bind,b", po::value<std::string>(), "address to listen on (default 0.0.0.0)")
         ("threads", po::value<unsigned>(), "threads serving the stations (default: the machine's cores; a station's connections stay on its thread)")
         ("data-code", po::value<std::string>(), "binary, ascii or auto (detect per message; default)")
-        ("max-connections", po::value<unsigned>(), "TCP clients served at once per port (default 64; 1 = iQ-R built-in port)")
+        ("max-connections", po::value<unsigned>(), "TCP clients served at once per port (default: the profile's, 16 on iQ-R/Q/L, 8 on FX5; 1 = one iQ-R connection entry)")
         ("idle-timeout", po::value<double>(), "close a TCP connection silent for this many seconds (default 300; 0 = never)")
         ("partial-frame-timeout", po::value<double>(), "close a TCP connection whose started frame is not whole after this many seconds (default 5; 0 = never)")
         ("max-connections-per-address", po::value<unsigned>(), "TCP clients served at once per port from one IP address (default 0 = no limit)")

@@ -7,7 +7,8 @@ request split across two TCP segments, two requests in one segment), stops it,
 and has Debian's tshark decode the capture with the dissector: every field of
 every message must come out as sent. Then the same for a 1E session (binary
 and ASCII, a profile that serves 1E) and a station-number-extended session
-(the RJ71GN11-T2 profile).
+(the RJ71GN11-T2 profile), and an FX5U session decoded with the "X/Y in octal"
+preference.
 
 Usage: check_dissector.py SLMP_SIM_BINARY DISSECTOR_LUA
 Exit 0 on success; prints every mismatch and exits 1 otherwise.
@@ -159,15 +160,28 @@ def converse_ext(tcp_port):
         exchange(frame_ext(0x1236, 0x0401, 0x0000, bytes([100, 0, 0, 0xA8, 1, 0]), station=0x7C, extended=0x0005))
 
 
+def converse_octal(tcp_port):
+    """An FX5U session decoded with the "X/Y in octal" preference: bit index 8
+    written in binary (X10 in octal, X8 in hex) and X*000010 in ASCII."""
+    with socket.create_connection(("127.0.0.1", tcp_port), timeout=10) as s:
+        s.sendall(frame_3e_binary(0x1401, 0x0001, bytes([8, 0, 0, 0x9C, 2, 0, 0x11])))
+        binary_response(s)
+        s.sendall(frame_3e_ascii("001014010001X*0000100001" + "1"))
+        ascii_response(s)
+
+
 FIELDS = ["frame.number", "slmp.frame", "slmp.data_code", "slmp.serial", "slmp.command", "slmp.subcommand",
           "slmp.command_name", "slmp.device", "slmp.points", "slmp.word", "slmp.end_code",
           "slmp.end_code_meaning", "slmp.request_in", "slmp.response_in", "udp.srcport"]
 
 
-def decode(pcap, ports=None):
+def decode(pcap, ports=None, xy_octal=False):
     """One dict of fields per SLMP message (a packet with two messages gives two).
-    `ports`: the SLMP ports preference (a 1E frame is decoded only there)."""
+    `ports`: the SLMP ports preference (a 1E frame is decoded only there);
+    `xy_octal`: the "X/Y in octal (iQ-F)" preference."""
     prefs = ["-o", f"slmp.ports:{ports}"] if ports else []
+    if xy_octal:
+        prefs += ["-o", "slmp.xy_octal:TRUE"]
     out = subprocess.run(["tshark", "-X", f"lua_script:{LUA}", *prefs, "-2", "-r", pcap, "-Y", "slmp",
                           "-T", "json", "--no-duplicate-keys", "-J", "frame udp slmp"],
                          capture_output=True, text=True, check=False)
@@ -280,6 +294,14 @@ EXTENDED = [
 ]
 
 
+OCTAL = [
+    dict(frame="3E request", code="binary", command="0x1401", sub="0x0001", device="X10", points="2"),
+    dict(frame="3E response", code="binary", command="0x1401", end="0x0000"),
+    dict(frame="3E request", code="ASCII", command="0x1401", sub="0x0001", device="X10", points="1"),
+    dict(frame="3E response", code="ASCII", command="0x1401", end="0x0000"),
+]
+
+
 def compare(what, expected, messages):
     failures = []
     if len(messages) != len(expected):
@@ -373,6 +395,8 @@ def main():
         failures += compare("recorded 1E session", ONE_E, decode(pcap, f"{tcp},{udp}"))
         pcap, _, _ = record(tmp, "session-ext", "RJ71GN11-T2", lambda tcp, udp: converse_ext(tcp))
         failures += compare("recorded station-number-extended session", EXTENDED, decode(pcap))
+        pcap, _, _ = record(tmp, "session-octal", "FX5U-32MR", lambda tcp, udp: converse_octal(tcp))
+        failures += compare("recorded FX5U session, X/Y in octal", OCTAL, decode(pcap, xy_octal=True))
         synthetic = os.path.join(tmp, "segments.pcap")
         synthetic_capture(synthetic)
         reassembled = decode(synthetic)
@@ -380,7 +404,8 @@ def main():
     if failures:
         print("\n".join(failures))
         return 1
-    print(f"ok: {len(LIVE)} 3E/4E, {len(ONE_E)} 1E, {len(EXTENDED)} station-number-extended recorded and "
+    print(f"ok: {len(LIVE)} 3E/4E, {len(ONE_E)} 1E, {len(EXTENDED)} station-number-extended, {len(OCTAL)} FX5U "
+          f"octal recorded and "
           f"{len(REASSEMBLED)} reassembled SLMP messages decoded field by field")
     return 0
 

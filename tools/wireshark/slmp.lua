@@ -304,6 +304,8 @@ local e_error = ProtoExpert.new("slmp.error", "Error end code", expert.group.RES
 slmp.experts = {e_bad_hex, e_short, e_error}
 
 slmp.prefs.ports = Pref.range("SLMP ports", "5000", "TCP and UDP ports decoded as SLMP", 65535)
+slmp.prefs.xy_octal = Pref.bool("X/Y in octal (iQ-F)", false,
+                                "Number X, Y, DX and DY in octal (X7, X10), as an FX5 (iQ-F) CPU does")
 
 local function hex4(v) return string.format("%04X", v) end
 
@@ -364,6 +366,20 @@ function Reader:add(tree, field, bytes)
     return v
 end
 
+-- The radix a device's number is written in: the table's, except X/Y (and
+-- DX/DY) in octal when the "X/Y in octal" preference says the capture is of an
+-- iQ-F (FX5) CPU. Binary frames carry the bit index either way.
+local XY_SYMBOLS = {X = true, Y = true, DX = true, DY = true}
+local function base_of(device)
+    if slmp.prefs.xy_octal and XY_SYMBOLS[device.symbol] then return 8 end
+    return device.base
+end
+
+local function device_text(device, number)
+    local base = base_of(device)
+    return device.symbol .. string.format(base == 16 and "%X" or base == 8 and "%o" or "%d", number)
+end
+
 -- A device: Q/L form 3-byte number + 1-byte code (ASCII: 2-char name + 6
 -- digits); iQ-R form 4-byte number + 2-byte code (ASCII: 4 + 8).
 function Reader:device(tree, iqr)
@@ -375,8 +391,8 @@ function Reader:device(tree, iqr)
         if not number_r then return nil end
         local device = DEVICE_BY_ASCII[name_r:string()]
         if device then
-            local number = tonumber(number_r:string(), device.base) or tonumber(number_r:string(), 16)
-            text = device.symbol .. (number and string.format(device.base == 16 and "%X" or "%d", number) or "?")
+            local number = tonumber(number_r:string(), base_of(device)) or tonumber(number_r:string(), 16)
+            text = number and device_text(device, number) or device.symbol .. "?"
         else
             text = "unknown device '" .. name_r:string() .. "'"
         end
@@ -386,7 +402,7 @@ function Reader:device(tree, iqr)
         if not code then return nil end
         local device = (iqr and DEVICE_BY_IQR or DEVICE_BY_Q)[code]
         if device then
-            text = device.symbol .. string.format(device.base == 16 and "%X" or "%d", number)
+            text = device_text(device, number)
         else
             text = string.format("unknown device code %X", code)
         end
@@ -416,7 +432,7 @@ function Reader:device_1e(tree)
     end
     local text
     if device then
-        text = device.symbol .. string.format(device.base == 16 and "%X" or "%d", number)
+        text = device_text(device, number)
     else
         text = string.format("unknown device code %04X", code)
     end
