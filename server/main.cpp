@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
             std::cout << "slmp-sim: configuration OK\n";
             return 0;
         }
-        spdlog::set_pattern(std::string(slmp::station::kLogLineHead) + "%v");
+        slmp::station::use_log_format();
         slmp::server::Server server(cl.plant);
         server.run();
         return 0;

@@ -1,7 +1,7 @@
 // A station's log lines. In a plant every line of a station starts with its
-// name ("press-7: 127.0.0.1:40312 (TCP) connected"), so a warning among 500
+// name ("press-7: tcp:127.0.0.1:40312 connected"), so a warning among 500
 // stations says whose it is; a lone unnamed station logs without a prefix.
-// All share the process's sinks, level and time format.
+// All share the process's sinks, level and line format.
 #pragma once
 
 #include <memory>
@@ -11,10 +11,11 @@
 
 namespace slmp::station {
 
-// The format of every log line up to the message (server/main.cpp sets it).
-inline constexpr const char* kLogLineHead = "%Y-%m-%d %H:%M:%S.%e %^%-5l%$ ";
+// Sets the process's line format (server/main.cpp): time, level, then the
+// logger's name and ": " when it has one, then the message.
+void use_log_format();
 
-// The default logger for an empty name; otherwise one that prefixes `name: `.
+// The default logger for an empty name; otherwise a copy of it with that name.
 std::shared_ptr<spdlog::logger> station_logger(const std::string& name);
 
 }  // namespace slmp::station

@@ -431,4 +431,6 @@ TEST_CASE("plant: each station's log lines start with its name", "[plant][logs]"
     CHECK(logs.find("press-2: tcp:127.0.0.1:") != std::string::npos);
     CHECK(logs.find(" connected (connection 1)") != std::string::npos);
     CHECK(logs.find("press-1: tcp:") == std::string::npos);
+    // Process-wide lines have no prefix (the stations' loggers share the format, not a name).
+    CHECK(logs.find("info  slmp-sim 0.1.0: a plant of 2 stations") != std::string::npos);
 }
