@@ -171,3 +171,23 @@ TEST_CASE("bench: --targets spreads the connections over two stations of a plant
     CHECK(stations[0]["errors"] == 0);
     CHECK(stations[1]["errors"] == 0);
 }
+
+TEST_CASE("bench: --octal-xy numbers an FX5's X/Y in octal: --device Y10 is bit 8, binary and ASCII", "[bench][octal]") {
+    SimProcess sim(with_args({"--profile", "FX5U-32MR"}));
+    const auto port = std::to_string(sim.tcp_port());
+    for (const auto& codec : std::vector<std::vector<std::string>>{{}, {"--ascii"}}) {
+        std::vector<std::string> args{"--port", port, "--octal-xy", "--device", "Y10", "--mix", "write1",
+                                      "--requests", "50", "--warmup", "0", "--json"};
+        args.insert(args.end(), codec.begin(), codec.end());
+        auto run = run_bench(args);
+        INFO(run.out << run.err);
+        REQUIRE(run.exit_code == 0);
+        CHECK(bench_json(run)["total"]["errors"]["total"] == 0);
+        // write1 writes 1 to the word at Y10: bit 8 on, so Y0-Y17 read as one word is 0x0100.
+        CHECK(http_get(sim.http_port(), "/api/devices/Y0?as=words").json()["values"] == nlohmann::json::array({0x0100}));
+        REQUIRE(http_put(sim.http_port(), "/api/devices/Y0?as=words", R"({"values": [0]})").status == 200);
+    }
+    auto bad = run_bench({"--port", port, "--octal-xy", "--device", "X8"});
+    CHECK(bad.exit_code == 2);
+    CHECK(bad.err.find("X is numbered in octal on this CPU: X7 is followed by X10") != std::string::npos);
+}

@@ -70,6 +70,7 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         ("mix", po::value(&mix)->default_value(mix),
             "comma list, used in turn: read1, read960, write1, write960, readbits")
         ("device", po::value(&o.device), "start device for every operation (default D0; M0 for readbits)")
+        ("octal-xy", po::bool_switch(&o.octal_xy), "X/Y numbered in octal, as on an iQ-F (FX5): --device X10 is bit 8")
         ("server-pid", po::value(&server_pid),
             "report this process's CPU time (/proc/PID/stat) during the run and per request")
         ("json", po::bool_switch(&o.json), "print one JSON object instead of the table")

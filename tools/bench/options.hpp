@@ -30,6 +30,7 @@ struct Options {
     double timeout = 2.0;             // seconds per request before it counts as lost
     std::vector<std::string> mix{"read1"};
     std::string device;               // start device for every operation; empty = defaults
+    bool octal_xy = false;            // --device's X/Y (and ASCII frames) in octal, as on an FX5
     bool json = false;
     bool allow_remote = false;        // a non-loopback target must be asked for explicitly
     pid_t server_pid = 0;             // sample this process's CPU time over the run; 0 = none

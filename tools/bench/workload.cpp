@@ -13,9 +13,9 @@ using devicemodel::DeviceAddress;
 
 namespace {
 
-DeviceAddress address(const std::string& text) {
+DeviceAddress address(const std::string& text, devicemodel::Numbering numbering) {
     std::string error;
-    auto parsed = devicemodel::parse_address(text, &error);
+    auto parsed = devicemodel::parse_address(text, numbering, &error);
     if (!parsed) throw std::invalid_argument("bad device '" + text + "': " + error);
     return *parsed;
 }
@@ -68,15 +68,17 @@ Workload make_workload(const Options& options) {
     w.kind = options.e4 ? protocol::FrameKind::E4 : protocol::FrameKind::E3;
     w.codec = options.ascii ? protocol::Codec::Ascii : protocol::Codec::Binary;
     unsigned slots = options.e4 ? options.depth : 1;
+    const devicemodel::Numbering numbering{options.octal_xy ? devicemodel::Radix::Oct : devicemodel::Radix::Hex};
     for (const auto& name : options.mix) {
         Recipe r = recipe(name);
-        DeviceAddress start = address(options.device.empty() ? r.default_device : options.device);
+        DeviceAddress start = address(options.device.empty() ? r.default_device : options.device, numbering);
         Operation op{name, {}, response_data(r, w.codec)};
         for (unsigned slot = 0; slot < slots; ++slot) {
             client::FrameOptions frame;
             frame.kind = w.kind;
             frame.codec = w.codec;
             frame.serial = static_cast<std::uint16_t>(slot);
+            frame.numbering = numbering;
             op.requests.push_back(encode(r, frame, start));
         }
         w.operations.push_back(std::move(op));
