@@ -341,8 +341,21 @@ void FieldWriter::bits(std::span<const std::uint8_t> points) {
     for (auto p : points) out_.push_back(p ? '1' : '0');
 }
 
+// Sized once and filled in place: a 960-word read answer is the bulk of the
+// simulator's work, and a push_back per byte was most of that.
 void FieldWriter::words(std::span<const std::uint16_t> values) {
-    for (auto v : values) u16(v);
+    const auto at = out_.size();
+    if (codec_ == Codec::Binary) {
+        out_.resize(at + 2 * values.size());
+        auto* p = out_.data() + at;
+        for (auto v : values) {
+            *p++ = static_cast<std::uint8_t>(v);
+            *p++ = static_cast<std::uint8_t>(v >> 8);
+        }
+        return;
+    }
+    out_.reserve(at + 4 * values.size());
+    for (auto v : values) append_hex(out_, v, 4);
 }
 
 void FieldWriter::raw(std::span<const std::uint8_t> bytes) { out_.insert(out_.end(), bytes.begin(), bytes.end()); }
