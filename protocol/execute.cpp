@@ -154,6 +154,7 @@ Outcome Engine::execute(const Request& request, Session& session) {
 
     FieldReader in(request.header.codec, request.data, codec_options(0));
     FieldWriter out(request.header.codec, codec_options(request.target));
+    out.bytes().reserve(64);   // most answers fit; growing from empty cost several allocations a request
     CommandContext ctx{target, ports_[request.target], cpus_, profile, request.header, *spec, request.operands,
                        session, in, out};
     auto code = own_1e_handler ? row_1e->handler(ctx) : spec->handler(ctx);

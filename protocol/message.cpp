@@ -7,6 +7,8 @@ namespace slmp::protocol {
 std::vector<std::uint8_t> encode_frame(Direction direction, const FrameHeader& header,
                                        std::span<const std::uint8_t> payload) {
     FieldWriter w(header.codec);
+    // One allocation for the whole frame (the longest header is 30 ASCII characters).
+    w.bytes().reserve(32 + payload.size());
     // Subheaders are fixed byte patterns in binary ("50 00") and fixed text in
     // ASCII ("5000"): both are the hex number 0x5000 written most significant
     // byte first, which u8 pairs produce in either codec.
