@@ -20,6 +20,7 @@ Outcome Reply::ok(std::span<const std::uint8_t> data) {
         return std::move(outcome_);
     }
     FieldWriter w(header_.codec);
+    w.bytes().reserve(32 + data.size());   // end code, the extended frame's echo, the data: one allocation
     w.u16(raw(EndCode::Ok));
     if (header_.kind == FrameKind::Ext) extended_echo(w);
     w.raw(data);
