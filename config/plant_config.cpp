@@ -226,7 +226,7 @@ std::string expand_placeholders(const std::string& text, long i, const std::stri
 namespace {
 
 // A scenario file that names its "stations" must name some station of the
-// plant: a typo would otherwise leave it silently unused.
+// configuration: a typo would otherwise leave it silently unused.
 void check_scenario_stations(const PlantConfig& plant) {
     std::set<std::string> files;
     for (const auto& station : plant.stations) files.insert(station.server.scenarios.begin(), station.server.scenarios.end());
@@ -241,8 +241,8 @@ void check_scenario_stations(const PlantConfig& plant) {
         else if (json["stations"].is_array())
             for (std::size_t i = 0; i < json["stations"].size(); ++i) patterns.push_back(at["stations"][i].string());
         bool used = false;
-        for (const auto& station : plant.stations)
-            used = used || station_patterns_match(patterns, station.server.name);
+        for (const auto& station : plant.stations)   // a lone unnamed station runs every scenario
+            used = used || station.server.name.empty() || station_patterns_match(patterns, station.server.name);
         if (!used)
             at["stations"].fail("no station of the plant is named " + json["stations"].dump(),
                                 "write a station name or pattern of the configuration, e.g. \"press-*\"");
@@ -265,6 +265,7 @@ PlantConfig parse_plant_config(const std::string& json_text, const std::string& 
         JsonAt at(body, source);
         plant.stations.push_back({parse_server_config(at, directory), parse_frontends_config(at)});
         if (plant.stations.back().frontends.kind != StationKind::Melsec) plant.stations.back().server.ports.clear();
+        check_scenario_stations(plant);
         return plant;
     }
     plant.plant = true;

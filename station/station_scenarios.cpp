@@ -16,7 +16,10 @@ std::vector<scenarios::Scenario> Station::load_scenarios() {
     std::vector<scenarios::Scenario> list;
     for (const auto& file : config_.scenarios) {
         auto s = scenarios::load_scenario(file);
-        if (!runs(s)) continue;   // a plant-wide list: the file names other stations
+        if (!runs(s)) {   // a plant-wide list: the file names other stations
+            log_->debug("scenario '{}' ({}) is for {}, not this station", s.name, s.source, fmt::join(s.stations, ", "));
+            continue;
+        }
         scenarios::apply_initial_state(s, config_);
         list.push_back(std::move(s));
     }

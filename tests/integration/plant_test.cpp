@@ -316,6 +316,15 @@ TEST_CASE("plant: a partitioned station answers nothing until healed; the others
     auto fine = TcpClient::open(tcp_of(sim, "press-1"));
     REQUIRE(cut.send(read_d100_4e(1)));                                      // swallowed
     CHECK(show(ask(fine, read_d100_4e(2))) == show(answer_4e(2, 0)));        // press-1 is unaffected
+    // Heal only once press-2 has swallowed serial 1 (its fault has fired): under load its
+    // thread may not have read the request yet, and would then answer it after the heal.
+    auto fired = [&] {
+        auto faults = nlohmann::json::parse(http_get(sim.http_port(), "/api/stations/press-2/faults").body)["faults"];
+        return !faults.empty() && faults[0]["fired"] == 1;
+    };
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!fired() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    REQUIRE(fired());
     REQUIRE(http(sim.http_port(), "DELETE", "/api/plant/scenarios/partition").status == 200);
     // The first answer press-2 gives is to the request after the heal: serial 1 was never answered.
     CHECK(show(ask(cut, read_d100_4e(3))) == show(answer_4e(3, 0)));
@@ -414,6 +423,11 @@ TEST_CASE("plant: a scenario file whose stations match none of the plant is a co
     auto checked = run_sim({"--check-config", file.string()});
     CHECK(checked.exit_code == 2);
     CHECK(checked.err.find(typo.string() + ": /stations: no station of the plant is named \"pres-*\"") != std::string::npos);
+    // A one-station file with a name is checked too; a lone unnamed station runs every scenario.
+    auto named = dir.write("named.json", R"({"name": "oven-1", "scenarios": [")" + typo.string() + R"("]})");
+    CHECK(run_sim({"--check-config", named.string()}).exit_code == 2);
+    auto unnamed = dir.write("unnamed.json", R"({"scenarios": [")" + typo.string() + R"("]})");
+    CHECK(run_sim({"--check-config", unnamed.string()}).exit_code == 0);
 }
 
 TEST_CASE("plant: each station's log lines start with its name", "[plant][logs]") {
