@@ -50,7 +50,7 @@ asio::awaitable<void> TcpListener::accept_loop() {
         session->start();
         if (sessions_.size() >= *config_.max_connections) {
             station_.log().info("TCP port {}: {} of {} connection(s) in use; refusing new clients until one leaves", port(),
-                         sessions_.size(), *config_.max_connections);
+                                sessions_.size(), *config_.max_connections);
             acceptor_.close(ec);
             co_return;
         }
@@ -66,7 +66,7 @@ bool TcpListener::over_address_cap(const tcp::socket& socket) const {
     auto found = sessions_per_address_.find(address);
     if (found == sessions_per_address_.end() || found->second < config_.max_connections_per_address) return false;
     station_.log().warn("TCP port {}: {} already has {} connection(s), the per-address limit; closing its new connection",
-                 port(), address, found->second);
+                        port(), address, found->second);
     return true;
 }
 

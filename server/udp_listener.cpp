@@ -87,7 +87,7 @@ asio::awaitable<void> UdpListener::answer(std::span<const std::uint8_t> input, u
     auto& outcome = handled.outcome;
     if (outcome.action == Outcome::Action::NeedMore) {
         station_.log().debug("{} datagram of {} byte(s) holds no whole request frame (check the request data length); "
-                      "not answered", peer.text(), n);
+                             "not answered", peer.text(), n);
         co_return;
     }
     if (outcome.consumed < n)

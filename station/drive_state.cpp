@@ -33,7 +33,7 @@ void DriveState::restore() {
             throw config::ConfigError("state directory: " + store_.file().string() + " is not a drives memo" + fix);
         if (doc.at("profile").get<std::string>() != profile_)
             log_.warn("state directory: {} was saved with profile {}; drives this CPU lacks are skipped",
-                         store_.file().string(), doc.at("profile").get<std::string>());
+                      store_.file().string(), doc.at("profile").get<std::string>());
         for (const auto& item : doc.at("drives")) {
             devicemodel::DriveMemo memo;
             memo.number = item.at("number").get<std::uint16_t>();

@@ -34,7 +34,7 @@ void log_outcome(spdlog::logger& log, const protocol::Peer& client, const protoc
     }
     if (outcome.note.empty()) {
         log.trace("{} {:04X}/{:04X} ok, {} byte(s) in, {} byte(s) out", peer, outcome.command, outcome.subcommand,
-                      outcome.consumed, outcome.response.size());
+                  outcome.consumed, outcome.response.size());
         return;
     }
     if (outcome.command == 0 && outcome.subcommand == 0)

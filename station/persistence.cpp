@@ -33,7 +33,7 @@ void Persistence::restore() {
                                   "; start with the profile it was saved with, or move the file away to start afresh");
     for (const auto& w : result.warnings) log_.warn("state directory: {}", w);
     log_.info("state directory: restored {} devices from {}", restore_all_ ? "all" : "latched",
-                 store_.file().string());
+              store_.file().string());
 }
 
 bool Persistence::save(std::string_view why) {
@@ -43,7 +43,7 @@ bool Persistence::save(std::string_view why) {
         if (units)
             if (auto bytes = units()) units_store_.save(*bytes);
         log_.debug("state directory: snapshot saved ({}) in {} ms", why,
-                      std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - started).count());
+                   std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - started).count());
         return true;
     } catch (const std::exception& e) {
         log_.error("state directory: snapshot ({}) failed: {}", why, e.what());

@@ -34,7 +34,7 @@ scenarios::EventSink ScenarioHook::event_sink() const {
 void ScenarioHook::start(std::vector<scenarios::Scenario> list, devicemodel::Cpu& cpu, scenarios::Station& station) {
     for (const auto& s : list)
         log_->info("scenario '{}' ({}): {} step(s), {} trigger(s), {} rung(s), {} fault(s){}", s.name, s.source,
-                     s.timeline.steps.size(), s.triggers.size(), s.logic.rungs.size(), s.faults.size(),
+                   s.timeline.steps.size(), s.triggers.size(), s.logic.rungs.size(), s.faults.size(),
                      s.replay ? ", replaying " + s.replay->file : "");
     attach(cpu, station);
     runners_.add(std::move(list), cpu, event_sink(), &station);
