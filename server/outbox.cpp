@@ -77,7 +77,9 @@ asio::awaitable<void> Outbox::send(boost::system::error_code& ec) {
         items_.pop_front();
         const auto& d = item.delivery;
         if (d.plain()) {
-            batch.insert(batch.end(), item.bytes.begin(), item.bytes.end());
+            // Usually the only response of the read: it goes out as it is, not copied.
+            if (batch.empty()) batch = std::move(item.bytes);
+            else batch.insert(batch.end(), item.bytes.begin(), item.bytes.end());
             continue;
         }
         co_await write(batch, ec);
