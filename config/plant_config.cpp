@@ -236,10 +236,7 @@ void check_scenario_stations(const PlantConfig& plant) {
         auto json = nlohmann::json::parse(in, nullptr, false);
         if (!json.is_object() || !json.contains("stations")) continue;
         JsonAt at(json, file);
-        std::vector<std::string> patterns;
-        if (json["stations"].is_string()) patterns.push_back(at["stations"].string());
-        else if (json["stations"].is_array())
-            for (std::size_t i = 0; i < json["stations"].size(); ++i) patterns.push_back(at["stations"][i].string());
+        auto patterns = parse_station_patterns(at["stations"]);
         bool used = false;
         for (const auto& station : plant.stations)   // a lone unnamed station runs every scenario
             used = used || station.server.name.empty() || station_patterns_match(patterns, station.server.name);

@@ -1,6 +1,18 @@
 #include "config/station_pattern.hpp"
 
+#include <algorithm>
+
 namespace slmp::config {
+
+std::vector<std::string> parse_station_patterns(const JsonAt& at) {
+    std::vector<std::string> names;
+    if (at.json().is_string()) names.push_back(at.string());
+    else if (at.json().is_array())
+        for (std::size_t i = 0; i < at.json().size(); ++i) names.push_back(at[i].string());
+    if (names.empty() || std::find(names.begin(), names.end(), "") != names.end())
+        at.fail("no station named", "give a station name, a pattern such as \"press-*\", or a list of them");
+    return names;
+}
 
 bool station_pattern_matches(std::string_view pattern, std::string_view name) {
     auto star = pattern.find('*');

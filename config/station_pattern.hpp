@@ -8,7 +8,13 @@
 #include <string_view>
 #include <vector>
 
+#include "config/json_path.hpp"
+
 namespace slmp::config {
+
+// "stations": "press-*" or ["press-1", "oven-*"] — a scenario file's key, a
+// group request's. Throws ConfigError (through `at`) for anything else.
+std::vector<std::string> parse_station_patterns(const JsonAt& at);
 
 bool station_pattern_matches(std::string_view pattern, std::string_view name);
 // Whether any of `patterns` matches `name`.

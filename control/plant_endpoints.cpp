@@ -41,14 +41,13 @@ std::vector<StationSide*> group(Plant& plant, const json& body) {
     if (!scenario || !(body.contains("stations") || body["scenario"].contains("stations")))
         throw ApiError{Status::bad_request, "send {\"stations\": \"press-*\" (or a list of names), \"scenario\": {...}}, "
                                             "or a scenario that names its \"stations\""};
-    std::vector<std::string> patterns;
     const auto& stations = body.contains("stations") ? body["stations"] : body["scenario"]["stations"];
-    if (stations.is_string()) patterns.push_back(stations.get<std::string>());
-    else if (stations.is_array())
-        for (const auto& item : stations)
-            if (item.is_string()) patterns.push_back(item.get<std::string>());
-    if (patterns.empty())
+    std::vector<std::string> patterns;
+    try {
+        patterns = config::parse_station_patterns(config::JsonAt(stations, "request body"));
+    } catch (const config::ConfigError&) {
         throw ApiError{Status::bad_request, "\"stations\": give a name, a pattern such as \"press-*\", or a list of them"};
+    }
     std::vector<StationSide*> chosen;
     for (auto& side : plant.stations)
         if (config::station_patterns_match(patterns, side->name)) chosen.push_back(side.get());

@@ -2,13 +2,13 @@
 // meaning of every key: docs/scenarios.md; machine-readable: schema.json.
 #include "scenarios/loader.hpp"
 
-#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "config/station_pattern.hpp"
 #include "config/config_parts.hpp"
 #include "scenarios/load_parts.hpp"
 
@@ -182,17 +182,6 @@ namespace {
 
 using config::JsonAt;
 
-// "press-*" or ["press-1", "oven-*"].
-std::vector<std::string> station_names(const JsonAt& at) {
-    std::vector<std::string> names;
-    if (at.json().is_string()) names.push_back(at.string());
-    else if (at.json().is_array())
-        for (std::size_t i = 0; i < at.json().size(); ++i) names.push_back(at[i].string());
-    if (names.empty() || std::find(names.begin(), names.end(), "") != names.end())
-        at.fail("no station named", "give a station name, a pattern such as \"press-*\", or a list of them");
-    return names;
-}
-
 InitialState initial_state(const JsonAt& at) {
     at.only_keys({"devices", "switch", "password", "error"});
     InitialState s;
@@ -245,7 +234,7 @@ Scenario parse_scenario(const std::string& json_text, const std::string& source)
     s.source = source;
     s.name = root.has("name") ? root["name"].string() : std::filesystem::path(source).stem().string();
     if (root.has("description")) s.description = root["description"].string();
-    if (root.has("stations")) s.stations = station_names(root["stations"]);
+    if (root.has("stations")) s.stations = config::parse_station_patterns(root["stations"]);
     if (root.has("seed")) s.seed = root["seed"].unsigned_int(0xFFFFFFFFFFFFFFFFull);
     if (root.has("initial")) s.initial = initial_state(root["initial"]);
     if (root.has("timeline")) s.timeline = load::timeline(root["timeline"]);

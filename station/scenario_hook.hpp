@@ -102,7 +102,7 @@ public:
 private:
     scenarios::EventSink event_sink() const;   // the runners' lines, into log_
 
-    std::shared_ptr<spdlog::logger> log_ = spdlog::default_logger();
+    std::shared_ptr<spdlog::logger> log_ = process_logger();
     scenarios::RunnerSet runners_;
     devicemodel::Cpu* cpu_ = nullptr;              // attach()
     scenarios::Station* station_ = nullptr;

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include <spdlog/spdlog.h>
+
 namespace slmp::station {
 
 void ScenarioStation::power_off() {

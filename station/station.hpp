@@ -177,7 +177,7 @@ private:
     static protocol::Outcome timed_out(const protocol::Request& request, std::chrono::milliseconds timer);
 
     config::ServerConfig config_;   // with the scenarios' initial state joined
-    std::shared_ptr<spdlog::logger> log_ = spdlog::default_logger();
+    std::shared_ptr<spdlog::logger> log_ = process_logger();
     devicemodel::Cpu cpu_;
     protocol::Engine engine_;
     std::vector<std::unique_ptr<devicemodel::Cpu>> other_cpus_;   // CPU No.2–4 of a multi-CPU system

@@ -1,6 +1,7 @@
 #include "station/station_log.hpp"
 
 #include <spdlog/pattern_formatter.h>
+#include <spdlog/spdlog.h>
 
 namespace slmp::station {
 
@@ -28,8 +29,10 @@ void use_log_format() {
     spdlog::set_formatter(std::move(formatter));
 }
 
+std::shared_ptr<spdlog::logger> process_logger() { return spdlog::default_logger(); }
+
 std::shared_ptr<spdlog::logger> station_logger(const std::string& name) {
-    if (name.empty()) return spdlog::default_logger();
+    if (name.empty()) return process_logger();
     // Shares the default logger's sinks (and so their format) and level; not
     // registered, so a plant of many stations does not fill spdlog's registry.
     return spdlog::default_logger()->clone(name);

@@ -7,7 +7,9 @@
 #include <memory>
 #include <string>
 
-#include <spdlog/spdlog.h>
+// Declared only: the headers that hold a logger stay free of spdlog's; the
+// files that log include <spdlog/spdlog.h>.
+namespace spdlog { class logger; }
 
 namespace slmp::station {
 
@@ -15,7 +17,9 @@ namespace slmp::station {
 // logger's name and ": " when it has one, then the message.
 void use_log_format();
 
-// The default logger for an empty name; otherwise a copy of it with that name.
+// The process's logger (spdlog's default), unnamed.
+std::shared_ptr<spdlog::logger> process_logger();
+// The process's logger for an empty name; otherwise a copy of it with that name.
 std::shared_ptr<spdlog::logger> station_logger(const std::string& name);
 
 }  // namespace slmp::station
