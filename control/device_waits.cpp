@@ -32,7 +32,7 @@ void DeviceWaits::close_all() {
 void DeviceWaits::changed() {
     if (check_posted_) return;
     check_posted_ = true;
-    boost::asio::post(io_, [this] {
+    boost::asio::post(home_, [this] {
         check_posted_ = false;
         check();
     });

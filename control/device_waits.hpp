@@ -25,7 +25,7 @@ public:
         bool met = false;
     };
 
-    DeviceWaits(boost::asio::io_context& io, EventHub& events) : io_(io), events_(events) {}
+    DeviceWaits(const station::Home& home, EventHub& events) : home_(home), events_(events) {}
     ~DeviceWaits();
     DeviceWaits(const DeviceWaits&) = delete;
     DeviceWaits& operator=(const DeviceWaits&) = delete;
@@ -40,7 +40,7 @@ private:
     void changed();   // from the write observer: check once the current work is done
     void check();
 
-    boost::asio::io_context& io_;
+    station::Home home_;
     EventHub& events_;
     std::vector<Waiter*> waiters_;
     bool check_posted_ = false;

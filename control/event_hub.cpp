@@ -28,7 +28,7 @@ bool parse_event_types(std::string_view text, unsigned* types, std::string* erro
     return true;
 }
 
-EventHub::EventHub(boost::asio::io_context& io, station::Station& station) : io_(io), station_(station), internal_flush_(io) {
+EventHub::EventHub(const station::Home& home, station::Station& station) : home_(home), station_(station), internal_flush_(home) {
     station_.activity().add_observer(this);
 }
 
@@ -38,7 +38,7 @@ EventHub::~EventHub() {
 }
 
 std::shared_ptr<EventHub::Subscriber> EventHub::subscribe(unsigned types) {
-    auto subscriber = std::make_shared<Subscriber>(io_, types);
+    auto subscriber = std::make_shared<Subscriber>(home_, types);
     subscribers_.push_back(subscriber);
     update_listening();
     return subscriber;

@@ -35,7 +35,7 @@ class EventHub final : public station::ActivityObserver, public devicemodel::Wri
 public:
     // A subscriber's queue; the stream writer drains it and sleeps on `wake`.
     struct Subscriber {
-        explicit Subscriber(boost::asio::io_context& io, unsigned types) : types(types), wake(io) {}
+        explicit Subscriber(const station::Home& home, unsigned types) : types(types), wake(home) {}
         unsigned types;
         std::deque<std::shared_ptr<const std::string>> queue;
         std::uint64_t dropped = 0;     // events lost to a full queue since the last overflow notice
@@ -48,7 +48,7 @@ public:
     // batching keeps that to a few events a second.
     static constexpr std::chrono::milliseconds kInternalBatch{100};
 
-    EventHub(boost::asio::io_context& io, station::Station& station);
+    EventHub(const station::Home& home, station::Station& station);
     ~EventHub();
     EventHub(const EventHub&) = delete;
     EventHub& operator=(const EventHub&) = delete;
@@ -88,7 +88,7 @@ private:
     void publish(unsigned type, std::string_view name, const nlohmann::json& data);
     void update_listening();
 
-    boost::asio::io_context& io_;
+    station::Home home_;
     station::Station& station_;
     std::vector<std::shared_ptr<Subscriber>> subscribers_;
     unsigned listening_ = 0;   // union of the subscribers' types

@@ -31,9 +31,9 @@ void common_fields(bhttp::response<Body>& response) {
 
 }  // namespace
 
-HttpServer::HttpServer(asio::io_context& io, const std::vector<ServedStation>& stations,
+HttpServer::HttpServer(const station::Home& strand, const std::vector<ServedStation>& stations,
                        const config::HttpConfig& config, const asio::ip::address& bind, bool named)
-    : io_(io), acceptor_(io) {
+    : strand_(strand), acceptor_(strand) {
     tcp::endpoint endpoint(bind, config.port);
     try {
         acceptor_.open(endpoint.protocol());
@@ -51,7 +51,7 @@ HttpServer::HttpServer(asio::io_context& io, const std::vector<ServedStation>& s
     add_plant_endpoints(plant_router_, plant_);
     add_static_pages(plant_router_);
 
-    asio::co_spawn(io_, accept_loop(), station::log_exception("HTTP port " + std::to_string(port_) + ": accept loop failed"));
+    asio::co_spawn(strand_, accept_loop(), station::log_exception("HTTP port " + std::to_string(port_) + ": accept loop failed"));
 }
 
 void HttpServer::stop() {
@@ -116,7 +116,7 @@ asio::awaitable<void> HttpServer::accept_loop() {
             spdlog::warn("HTTP port {}: accept failed: {}", port_, ec.message());
             continue;
         }
-        asio::co_spawn(io_, serve(std::move(socket)), station::log_exception("HTTP connection failed"));
+        asio::co_spawn(strand_, serve(std::move(socket)), station::log_exception("HTTP connection failed"));
     }
 }
 
@@ -164,15 +164,11 @@ asio::awaitable<void> HttpServer::serve(tcp::socket socket) {
             if (side) {
                 stream.expires_never();   // a wait and an event stream have their own timeouts
                 lent_.insert(registered);
-                if (&side->home == &io_) {
-                    reply = co_await station_request(*side, request.method(), std::move(station_target),
-                                                     std::move(request.body()), stream.socket());
-                } else {
-                    reply = co_await asio::co_spawn(side->home,
-                                                    station_request(*side, request.method(), std::move(station_target),
-                                                                    std::move(request.body()), stream.socket()),
-                                                    asio::use_awaitable);
-                }
+                // On the station's strand, which is never the HTTP server's own.
+                reply = co_await asio::co_spawn(side->home,
+                                                station_request(*side, request.method(), std::move(station_target),
+                                                                std::move(request.body()), stream.socket()),
+                                                asio::use_awaitable);
                 lent_.erase(registered);
                 if (stopping_) keep_alive = false;   // stop() left this connection to end here
             }

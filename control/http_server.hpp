@@ -19,8 +19,8 @@ namespace slmp::control {
 class HttpServer {
 public:
     // Binds the port (throws config::ConfigError naming the fix when it cannot)
-    // and serves on `io`. `named`: a plant (routes, lists and metrics by name).
-    HttpServer(boost::asio::io_context& io, const std::vector<ServedStation>& stations, const config::HttpConfig& config,
+    // and serves on `strand`. `named`: a plant (routes, lists and metrics by name).
+    HttpServer(const station::Home& strand, const std::vector<ServedStation>& stations, const config::HttpConfig& config,
                const boost::asio::ip::address& bind, bool named);
 
     std::uint16_t port() const { return port_; }
@@ -35,7 +35,7 @@ private:
     // for the plant's own routes (and 404s).
     StationSide* station_for(std::string_view target, std::string* station_target, Reply* error);
 
-    boost::asio::io_context& io_;
+    station::Home strand_;   // the HTTP server's own state (connections, the plant router)
     Plant plant_;
     Router plant_router_;   // /healthz, /readyz, /api/stations[/{name}], a plant's /metrics
     boost::asio::ip::tcp::acceptor acceptor_;

@@ -1,6 +1,6 @@
 // One station as the HTTP side serves it: its API objects (metrics, event hub,
-// waits, the endpoints' Router), living on the station's own thread. The HTTP
-// server hands each request for the station to that thread (on_station), so
+// waits, the endpoints' Router), living on the station's strand. The HTTP
+// server hands each request for the station to that strand (on_station), so
 // the endpoints keep touching the station without a lock (docs/plants.md,
 // "Threads").
 #pragma once
@@ -27,7 +27,7 @@ namespace slmp::control {
 struct ServedStation {
     std::string name;                   // empty for a lone station
     station::Station& station;
-    boost::asio::io_context& home;      // the thread the station runs on
+    station::Home home;                 // the strand the station runs on
     PortList ports;
 };
 
@@ -38,7 +38,7 @@ struct StationSide {
 
     std::string name;
     station::Station& station;
-    boost::asio::io_context& home;
+    station::Home home;
     Metrics metrics;
     EventHub events;
     DeviceWaits waits;
@@ -46,16 +46,10 @@ struct StationSide {
     Router router;   // every station endpoint, as "/api/devices/{address}", ...
 };
 
-// Runs fn() on the station's thread and resumes the caller on its own with
-// the result (directly, when both are the same thread).
+// Runs fn() on the station's strand and resumes the caller with the result.
 template <class F>
 boost::asio::awaitable<std::invoke_result_t<F>> on_station(StationSide& side, F fn) {
-    using Result = std::invoke_result_t<F>;
-    auto here = co_await boost::asio::this_coro::executor;
-    if (here == boost::asio::any_io_executor(side.home.get_executor())) co_return fn();
-    co_return co_await boost::asio::co_spawn(
-        side.home, [fn = std::move(fn)]() -> boost::asio::awaitable<Result> { co_return fn(); },
-        boost::asio::use_awaitable);
+    return station::on_home(side.home, std::move(fn));
 }
 
 // The stations of the process, for the plant endpoints.

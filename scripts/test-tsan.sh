@@ -5,10 +5,11 @@
 # makes the simulator exit 66, which fails the test that started it.
 # Not part of scripts/test.sh (a third full build would not fit CI's time);
 # run it after changing anything that crosses threads. Default filter: the
-# plant tests and the HTTP API tests; give a Catch2 filter to run others.
+# one-station threads test, the plant tests and the HTTP API tests; give a
+# Catch2 filter to run others.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-filter=${1:-"[plant],[http]"}
+filter=${1:-"[threads],[plant],[http]"}
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g -DNDEBUG" -DSLMP_TSAN=ON -DBUILD_TESTING=OFF >/dev/null
 cmake --build build-tsan -j"$(nproc)" --target slmp-sim

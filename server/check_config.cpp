@@ -29,7 +29,7 @@ static void check_station(const config::StationConfig& station_config) {
     checked.record_pcap_file.clear();
     boost::asio::io_context io;
     NoTransports transports;   // outlives the station that points at it
-    station::Station station(io, checked);
+    station::Station station(boost::asio::make_strand(io), checked);
     station.connect(transports);
     if (frontends.hostlink.enabled)
         if (auto problem = frontends.hostlink.options->map.check(station.cpu().memory()); !problem.empty())

@@ -9,11 +9,11 @@ namespace slmp::server {
 namespace asio = boost::asio;
 using asio::ip::udp;
 
-FrontEndUdpListener::FrontEndUdpListener(asio::io_context& io, std::string protocol, std::uint16_t port,
+FrontEndUdpListener::FrontEndUdpListener(const station::Home& home, std::string protocol, std::uint16_t port,
                                          const asio::ip::address& bind, DatagramHandler handler)
-    : protocol_(std::move(protocol)), handler_(std::move(handler)), socket_(io, udp::endpoint(bind, port)) {
+    : protocol_(std::move(protocol)), handler_(std::move(handler)), socket_(home, udp::endpoint(bind, port)) {
     port_ = socket_.local_endpoint().port();
-    asio::co_spawn(io, serve(),
+    asio::co_spawn(home, serve(),
                    station::log_exception(protocol_ + " UDP port " + std::to_string(port_) + ": receive loop failed"));
 }
 

@@ -25,7 +25,7 @@ using DatagramHandler = std::function<DatagramAnswer(std::span<const std::uint8_
 class FrontEndUdpListener {
 public:
     // Binds at once; throws boost::system::system_error when the port cannot be had.
-    FrontEndUdpListener(boost::asio::io_context& io, std::string protocol, std::uint16_t port,
+    FrontEndUdpListener(const station::Home& home, std::string protocol, std::uint16_t port,
                         const boost::asio::ip::address& bind, DatagramHandler handler);
     std::uint16_t port() const { return port_; }
     void stop();

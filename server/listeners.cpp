@@ -7,14 +7,14 @@
 
 namespace slmp::server {
 
-Listeners::Listeners(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
+Listeners::Listeners(const station::Home& home, station::Station& station, const config::ServerConfig& config,
                      const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind) {
     for (const auto& port : config.ports) {
         try {
             if (port.transport == config::Transport::Tcp)
-                tcp_.push_back(std::make_unique<TcpListener>(io, station, port, bind));
+                tcp_.push_back(std::make_unique<TcpListener>(home, station, port, bind));
             else
-                udp_.push_back(std::make_unique<UdpListener>(io, station, port, bind));
+                udp_.push_back(std::make_unique<UdpListener>(home, station, port, bind));
         } catch (const boost::system::system_error& e) {
             auto transport = port.transport == config::Transport::Tcp ? "TCP" : "UDP";
             throw config::ConfigError(std::string("cannot listen on ") + transport + " " + config.bind + ":" +
@@ -23,8 +23,8 @@ Listeners::Listeners(boost::asio::io_context& io, station::Station& station, con
                                       "-port) or stop the program using it");
         }
     }
-    if (frontends.hostlink.enabled) listen_hostlink(io, station, config, frontends.hostlink, bind);
-    if (frontends.jw51cm.enabled) listen_jw51cm(io, station, config, frontends.jw51cm, bind);
+    if (frontends.hostlink.enabled) listen_hostlink(home, station, config, frontends.hostlink, bind);
+    if (frontends.jw51cm.enabled) listen_jw51cm(home, station, config, frontends.jw51cm, bind);
     if (hostlink_ || jw51cm_) {
         station_ = &station;
         station.attach_frontends({hostlink_.get(), jw51cm_.get()});
@@ -77,7 +77,7 @@ station::FrontEndCall::Delivery jw51cm_report(station::FrontEndCall& call, std::
 
 }  // namespace
 
-void Listeners::listen_hostlink(boost::asio::io_context& io, station::Station& station,
+void Listeners::listen_hostlink(const station::Home& home, station::Station& station,
                                 const config::ServerConfig& config, const config::HostLinkConfig& hostlink,
                                 const boost::asio::ip::address& bind) {
     if (auto problem = hostlink.options->map.check(station.cpu().memory()); !problem.empty())
@@ -99,17 +99,17 @@ void Listeners::listen_hostlink(boost::asio::io_context& io, station::Station& s
                                                  std::move(on_closed));
     };
     try {
-        hostlink_tcp_ = std::make_unique<TcpListener>(io, station, port, bind, std::move(factory));
+        hostlink_tcp_ = std::make_unique<TcpListener>(home, station, port, bind, std::move(factory));
     } catch (const boost::system::system_error& e) {
         throw config::ConfigError("cannot listen on the host-link TCP port " + config.bind + ":" +
                                   std::to_string(port.port) + ": " + e.code().message() +
                                   "; choose another port (\"hostlink\": {\"tcp_port\": ...} or --hostlink-port) "
                                   "or stop the program using it");
     }
-    if (!hostlink.serial_path.empty()) serial_ = std::make_unique<SerialPort>(io, *hostlink_, hostlink.serial_path);
+    if (!hostlink.serial_path.empty()) serial_ = std::make_unique<SerialPort>(home, *hostlink_, hostlink.serial_path);
 }
 
-void Listeners::listen_jw51cm(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
+void Listeners::listen_jw51cm(const station::Home& home, station::Station& station, const config::ServerConfig& config,
                               const config::Jw51cmConfig& jw, const boost::asio::ip::address& bind) {
     jw51cm_ = std::make_unique<jw51cm::ComputerLink>(station.cpu(), *jw.options);
     if (auto problem = jw51cm_->map().check(station.cpu().memory()); !problem.empty()) throw config::ConfigError(problem);
@@ -136,7 +136,7 @@ void Listeners::listen_jw51cm(boost::asio::io_context& io, station::Station& sta
                                                      std::move(on_closed));
         };
         try {
-            jw51cm_tcp_ = std::make_unique<TcpListener>(io, station, port, bind, std::move(factory));
+            jw51cm_tcp_ = std::make_unique<TcpListener>(home, station, port, bind, std::move(factory));
         } catch (const boost::system::system_error& e) {
             throw fail("TCP", port.port, e);
         }
@@ -151,7 +151,7 @@ void Listeners::listen_jw51cm(boost::asio::io_context& io, station::Station& sta
             return DatagramAnswer{as_text(result.response), delivery.delay};
         };
         try {
-            jw51cm_udp_ = std::make_unique<FrontEndUdpListener>(io, "JW-51CM", jw.udp->port, bind, std::move(handler));
+            jw51cm_udp_ = std::make_unique<FrontEndUdpListener>(home, "JW-51CM", jw.udp->port, bind, std::move(handler));
         } catch (const boost::system::system_error& e) {
             throw fail("UDP", jw.udp->port, e);
         }

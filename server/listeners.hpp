@@ -29,7 +29,7 @@ class Listeners final : public station::Transports {
 public:
     // Binds every port of `config` on `bind`; throws config::ConfigError naming
     // the port and the fix when one cannot be had.
-    Listeners(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
+    Listeners(const station::Home& home, station::Station& station, const config::ServerConfig& config,
               const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind);
     ~Listeners();
     Listeners(const Listeners&) = delete;
@@ -48,9 +48,9 @@ public:
     std::vector<station::PushTarget> push_targets() override;
 
 private:
-    void listen_hostlink(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
+    void listen_hostlink(const station::Home& home, station::Station& station, const config::ServerConfig& config,
                          const config::HostLinkConfig& hostlink, const boost::asio::ip::address& bind);
-    void listen_jw51cm(boost::asio::io_context& io, station::Station& station, const config::ServerConfig& config,
+    void listen_jw51cm(const station::Home& home, station::Station& station, const config::ServerConfig& config,
                        const config::Jw51cmConfig& jw, const boost::asio::ip::address& bind);
 
     station::Station* station_ = nullptr;   // whose frontends() name ours (cleared on destruction)

@@ -26,8 +26,8 @@ namespace {
 
 }  // namespace
 
-SerialPort::SerialPort(asio::io_context& io, hostlink::HostLink& link, std::filesystem::path link_path)
-    : link_(link), master_(io), link_path_(std::move(link_path)) {
+SerialPort::SerialPort(const station::Home& home, hostlink::HostLink& link, std::filesystem::path link_path)
+    : link_(link), master_(home), link_path_(std::move(link_path)) {
     int master = ::posix_openpt(O_RDWR | O_NOCTTY);
     if (master < 0) fail("cannot open a pseudo-terminal");
     if (::grantpt(master) != 0 || ::unlockpt(master) != 0) {
@@ -51,7 +51,7 @@ SerialPort::SerialPort(asio::io_context& io, hostlink::HostLink& link, std::file
     if (ec)
         throw config::ConfigError("--serial " + link_path_.string() + ": cannot create the link to " + device_ + ": " +
                                   ec.message() + "; give a path in a writable folder");
-    asio::co_spawn(io, serve(), station::log_exception("host link on " + device_ + ": read loop failed"));
+    asio::co_spawn(home, serve(), station::log_exception("host link on " + device_ + ": read loop failed"));
 }
 
 SerialPort::~SerialPort() {

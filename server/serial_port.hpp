@@ -19,7 +19,7 @@ class SerialPort {
 public:
     // Opens the pty and makes `link_path` point at its slave; throws
     // config::ConfigError naming the problem and the fix.
-    SerialPort(boost::asio::io_context& io, hostlink::HostLink& link, std::filesystem::path link_path);
+    SerialPort(const station::Home& home, hostlink::HostLink& link, std::filesystem::path link_path);
     ~SerialPort();
     SerialPort(const SerialPort&) = delete;
     SerialPort& operator=(const SerialPort&) = delete;

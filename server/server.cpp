@@ -26,13 +26,10 @@ asio::ip::address bind_address(const std::string& text) {
     return address;
 }
 
-// A thread per core (or --threads), but no more threads than stations: a
-// station and its connections stay on one thread.
-std::vector<std::unique_ptr<asio::io_context>> make_threads(const config::PlantConfig& plant) {
-    std::size_t wanted = plant.threads ? plant.threads : std::max(1u, std::thread::hardware_concurrency());
-    std::vector<std::unique_ptr<asio::io_context>> threads(std::min(wanted, plant.stations.size()));
-    for (auto& io : threads) io = std::make_unique<asio::io_context>(1);
-    return threads;
+// A thread per core, or --threads. Any thread serves any station's
+// connections; each station's own work stays on its strand.
+std::size_t thread_count(const config::PlantConfig& plant) {
+    return plant.threads ? plant.threads : std::max(1u, std::thread::hardware_concurrency());
 }
 
 // A plant holds two sockets a station and more per client; the soft limit
@@ -46,7 +43,7 @@ void raise_open_file_limit() {
 
 }  // namespace
 
-Server::Served::Served(asio::io_context& home, const config::StationConfig& station_config)
+Server::Served::Served(const station::Home& home, const config::StationConfig& station_config)
     : home(home),
       settings(station_config),
       station(home, settings.server),
@@ -56,15 +53,17 @@ Server::Served::Served(asio::io_context& home, const config::StationConfig& stat
 
 Server::Server(const config::PlantConfig& plant)
     : plant_(plant),
-      threads_(make_threads(plant_)),
-      signals_(*threads_.front(), SIGINT, SIGTERM),
-      snapshot_signal_(*threads_.front(), SIGUSR1) {
+      threads_(thread_count(plant_)),
+      io_(static_cast<int>(threads_)),
+      main_(asio::make_strand(io_)),
+      signals_(main_, SIGINT, SIGTERM),
+      snapshot_signal_(main_, SIGUSR1) {
     raise_open_file_limit();
     std::vector<control::ServedStation> served;
     for (std::size_t k = 0; k < plant_.stations.size(); ++k) {
         const auto& station_config = plant_.stations[k];
         try {
-            stations_.push_back(std::make_unique<Served>(*threads_[k % threads_.size()], station_config));
+            stations_.push_back(std::make_unique<Served>(asio::make_strand(io_), station_config));
         } catch (const config::ConfigError& e) {
             if (!plant_.plant) throw;
             throw config::ConfigError("station '" + station_config.server.name + "': " + e.what());
@@ -74,7 +73,7 @@ Server::Server(const config::PlantConfig& plant)
                           control::PortList{s.settings.server.bind, s.listeners.tcp_ports(), s.listeners.udp_ports(), 0}});
     }
     if (first().http.enabled)
-        http_ = std::make_unique<control::HttpServer>(*threads_.front(), served, first().http,
+        http_ = std::make_unique<control::HttpServer>(main_, served, first().http,
                                                       bind_address(http_bind()), plant_.plant);
 }
 
@@ -108,7 +107,7 @@ void Server::log_stations() const {
     if (stations_.size() > kStationsLogged)
         spdlog::info("... and {} more stations (GET /api/stations lists them all)", stations_.size() - kStationsLogged);
     if (plant_.plant)
-        spdlog::info("slmp-sim 0.1.0: a plant of {} stations on {} thread(s)", stations_.size(), threads_.size());
+        spdlog::info("slmp-sim 0.1.0: a plant of {} stations on {} thread(s)", stations_.size(), threads_);
     if (http_)
         spdlog::info("web monitor and HTTP API on http://{}:{}/", http_bind(), http_->port());
 }
@@ -129,14 +128,14 @@ void Server::run() {
     if (http_) http_->set_ready();
     write_ready_file();
     std::vector<std::thread> workers;
-    for (std::size_t k = 1; k < threads_.size(); ++k) workers.emplace_back([io = threads_[k].get()] { io->run(); });
-    threads_.front()->run();
+    for (std::size_t k = 1; k < threads_; ++k) workers.emplace_back([this] { io_.run(); });
+    io_.run();
     for (auto& worker : workers) worker.join();
     spdlog::info("stopped");
 }
 
 void Server::stop() {
-    // Each station stops on its own thread; its io_context then runs out of work.
+    // Each station stops on its own strand; the io_context then runs out of work.
     for (auto& s : stations_)
         asio::post(s->home, [served = s.get()] {
             served->station.stop();
@@ -175,7 +174,7 @@ void Server::write_ready_file() const {
         ready["stations"] = std::move(list);
     }
     if (http_) ready["http"] = http_->port();
-    ready["threads"] = threads_.size();
+    ready["threads"] = threads_;
     ready["pid"] = getpid();
     {
         std::ofstream(temp) << ready.dump() << "\n";

@@ -1,5 +1,6 @@
 // The running simulator: its stations (one, or a plant of them), each with its
-// listeners on its home thread; the HTTP API; the signals that stop it.
+// listeners on its home strand; the HTTP API; the signals that stop it; the
+// threads that run them all (one io_context shared by --threads threads).
 #pragma once
 
 #include <memory>
@@ -26,11 +27,12 @@ public:
     void run();
 
 private:
-    // One station on its home io_context: everything it does (its
-    // connections, scan, scenarios, the HTTP requests for it) runs there.
+    // One station on its home strand: everything it does (its listeners,
+    // scan, scenarios, the serving of its requests, the HTTP requests for it)
+    // runs there; its TCP connections read and write on strands of their own.
     struct Served {
-        Served(boost::asio::io_context& home, const config::StationConfig& config);
-        boost::asio::io_context& home;
+        Served(const station::Home& home, const config::StationConfig& config);
+        station::Home home;
         config::StationConfig settings;   // as read (Listeners keep references into it)
         station::Station station;
         Listeners listeners;
@@ -44,7 +46,9 @@ private:
     const config::ServerConfig& first() const { return plant_.stations.front().server; }   // the process-wide keys
 
     config::PlantConfig plant_;
-    std::vector<std::unique_ptr<boost::asio::io_context>> threads_;   // one io_context a thread; [0] is main's
+    std::size_t threads_;                 // run io_ (the main thread is one of them)
+    boost::asio::io_context io_;
+    station::Home main_;                  // the HTTP server and the signals
     std::vector<std::unique_ptr<Served>> stations_;
     std::unique_ptr<control::HttpServer> http_;   // null with --no-http; destroyed before the stations
     boost::asio::signal_set signals_;

@@ -9,14 +9,20 @@ namespace slmp::server {
 namespace asio = boost::asio;
 using asio::ip::tcp;
 
-TcpListener::TcpListener(asio::io_context& io, station::Station& station, const config::PortConfig& port,
+TcpListener::TcpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
                          const asio::ip::address& bind, SessionFactory factory)
-    : io_(io), station_(station), config_(port), endpoint_(bind, port.port), acceptor_(io), factory_(std::move(factory)) {
+    : home_(home), station_(station), config_(port), endpoint_(bind, port.port), acceptor_(home), factory_(std::move(factory)) {
     if (!config_.max_connections) config_.max_connections = station.engine().port().max_connections;
+    // An SLMP connection in the instant timing mode reads, frames and writes on
+    // a strand of its own, so several threads serve one busy station; its
+    // requests are still served one at a time on the station's strand. The
+    // timing modes' waits and a front end's handlers touch the station
+    // throughout: those connections stay on the station's strand.
+    own_strands_ = !factory_ && station.timing_mode() == config::TimingMode::Instant;
     if (!factory_)
         factory_ = [this](tcp::socket socket, std::function<void(StreamSession*)> on_closed,
                           std::function<std::size_t()> connections) -> std::shared_ptr<StreamSession> {
-            return std::make_shared<TcpSession>(std::move(socket), station_, config_, std::move(on_closed),
+            return std::make_shared<TcpSession>(std::move(socket), home_, station_, config_, std::move(on_closed),
                                                 std::move(connections));
         };
     listen();   // throws boost::system::system_error when the port cannot be had
@@ -30,13 +36,17 @@ void TcpListener::listen() {
     acceptor_.listen();
     // The bound port (also when 0 was asked for: endpoint_ learns it only after the first listen()).
     const auto bound = acceptor_.local_endpoint().port();
-    asio::co_spawn(io_, accept_loop(), station::log_exception("TCP port " + std::to_string(bound) + ": accept loop failed"));
+    asio::co_spawn(home_, accept_loop(), station::log_exception("TCP port " + std::to_string(bound) + ": accept loop failed"));
 }
 
 asio::awaitable<void> TcpListener::accept_loop() {
     while (acceptor_.is_open()) {
         boost::system::error_code ec;
-        auto socket = co_await acceptor_.async_accept(asio::redirect_error(asio::use_awaitable, ec));
+        // Accepted into a socket made with its executor: Boost 1.74's converting
+        // move from a strand-typed socket (async_accept(executor, ...)) releases
+        // the strand twice (valgrind: a freed strand_impl on the next wait).
+        tcp::socket socket(own_strands_ ? station::Home(asio::make_strand(home_.get_inner_executor())) : home_);
+        co_await acceptor_.async_accept(socket, asio::redirect_error(asio::use_awaitable, ec));
         if (ec) {
             if (ec == asio::error::operation_aborted || !acceptor_.is_open()) co_return;
             station_.log().warn("TCP port {}: accept failed: {}", port(), ec.message());

@@ -22,7 +22,7 @@ namespace slmp::server {
 class TcpListener {
 public:
     // Serves SLMP (TcpSession) unless `factory` builds another protocol's sessions.
-    TcpListener(boost::asio::io_context& io, station::Station& station, const config::PortConfig& port,
+    TcpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
                 const boost::asio::ip::address& bind, SessionFactory factory = {});
 
     std::uint16_t port() const { return endpoint_.port(); }   // the bound port, also when 0 was asked for
@@ -40,7 +40,7 @@ private:
     void session_closed(StreamSession* session);
     bool over_address_cap(const boost::asio::ip::tcp::socket& socket) const;
 
-    boost::asio::io_context& io_;
+    station::Home home_;
     station::Station& station_;
     config::PortConfig config_;
     boost::asio::ip::tcp::endpoint endpoint_;
@@ -48,6 +48,7 @@ private:
     SessionFactory factory_;
     std::unordered_map<StreamSession*, std::shared_ptr<StreamSession>> sessions_;
     std::unordered_map<std::string, unsigned> sessions_per_address_;   // only with a per-address cap
+    bool own_strands_ = false;   // SLMP sessions read and write on strands of their own
     bool stopping_ = false;
     bool refusing_ = false;
 };

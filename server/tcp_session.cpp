@@ -32,9 +32,11 @@ std::pair<protocol::FrameKind, protocol::Codec> request_shape(std::span<const st
     return {FrameKind::E3, Codec::Binary};
 }
 
-TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Station& station, const config::PortConfig& port,
-                       std::function<void(StreamSession*)> on_closed, std::function<std::size_t()> connections)
+TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Home home, station::Station& station,
+                       const config::PortConfig& port, std::function<void(StreamSession*)> on_closed,
+                       std::function<std::size_t()> connections)
     : socket_(std::move(socket)),
+      home_(std::move(home)),
       station_(station),
       policy_(to_policy(port.data_code)),
       idle_timeout_(port.idle_timeout_ms),
@@ -61,15 +63,21 @@ void TcpSession::start() {
 }
 
 void TcpSession::close() {
+    asio::dispatch(socket_.get_executor(), [self = shared_from_this()] { self->close_now(); });
+}
+
+void TcpSession::close(const std::string& why) {
+    asio::dispatch(socket_.get_executor(), [self = shared_from_this(), why] {
+        self->close_reason_ = why;
+        self->close_now();
+    });
+}
+
+void TcpSession::close_now() {
     boost::system::error_code ec;
     socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
     socket_.close(ec);
     deadline_timer_.cancel();
-}
-
-void TcpSession::close(const std::string& why) {
-    close_reason_ = why;
-    close();
 }
 
 station::PushTarget TcpSession::push_target() {
@@ -79,22 +87,28 @@ station::PushTarget TcpSession::push_target() {
             }};
 }
 
+// From the station's strand (an Ondemand push); the outbox is the connection's.
 void TcpSession::push(std::vector<std::uint8_t> bytes) {
-    if (!outbox_ || closed_) return;
-    outbox_->add(std::move(bytes), {});
-    push_pending_ = true;
-    if (sending_) return;   // serve() sends it after the responses it is writing
-    boost::system::error_code ec;
-    socket_.cancel(ec);     // the read returns operation_aborted; serve() sends, then reads again
+    asio::dispatch(socket_.get_executor(), [self = shared_from_this(), bytes = std::move(bytes)]() mutable {
+        if (!self->outbox_ || self->closed_) return;
+        self->outbox_->add(std::move(bytes), {});
+        self->push_pending_ = true;
+        if (self->sending_) return;   // serve() sends it after the responses it is writing
+        boost::system::error_code ec;
+        self->socket_.cancel(ec);     // the read returns operation_aborted; serve() sends, then reads again
+    });
 }
 
 void TcpSession::finish(const std::string& why) {
     if (closed_) return;
     closed_ = true;
-    close();
-    station_.log().info("{} disconnected (connection {}): {}", peer_.text(), session_.id, why);
-    station_.activity().closed(session_.id, why);
-    on_closed_(this);
+    close_now();
+    // The station's side of the goodbye: its activity and the listener's count.
+    asio::dispatch(home_, [self = shared_from_this(), why] {
+        self->station_.log().info("{} disconnected (connection {}): {}", self->peer_.text(), self->session_.id, why);
+        self->station_.activity().closed(self->session_.id, why);
+        self->on_closed_(self.get());
+    });
 }
 
 awaitable<void> TcpSession::serve() {
@@ -151,67 +165,24 @@ awaitable<void> TcpSession::serve() {
         }
         if (!socket_.is_open()) break;
 
-        // Answer every whole frame now in the buffer, in order, in one write.
-        // They all arrived before any was answered, so they stood in the
-        // port's receive buffer together: the commands-per-connection limit
-        // counts them (spec §2.3; docs/end-codes.md).
-        std::size_t offset = 0;
-        session_.queued_ahead = 0;
-        session_.connections = connections_ ? connections_() : 1;
-        bool close_after = false;
-        bool restart_after = false;
-        bool reset_after = false;
-        while (offset < pending.size()) {
-            auto input = std::span<const std::uint8_t>(pending).subspan(offset);
-            std::optional<station::Service> service;
-            if (timed) {
-                const auto queued = station_.next_request(input, policy_, session_);
-                if (!queued && mode == config::TimingMode::EndOfScan && !at_end) break;
-                if (queued && queued->start == 0) {
-                    const auto arrival = timed->arrival(offset + queued->end);
-                    if (mode == config::TimingMode::EndOfScan) {
-                        service = station::Station::end_of_scan_service(arrival, queued->timer, served_at, at_end);
-                        if (!service) {
-                            waiting_frames = true;   // this one and those behind it wait for END
-                            break;
-                        }
-                    } else if ((service = station_.model_service(input, policy_, session_, arrival))) {
-                        // model: executed and answered at the modelled time; the
-                        // answers before it leave first, and reading goes on.
-                        if (service->at > scan->clock().now()) {
-                            sending_ = true;
-                            co_await outbox.send(ec);
-                            sending_ = false;
-                        }
-                        while (!ec && service->at > scan->clock().now() && socket_.is_open() && !scan->stopped())
-                            co_await timed->wait(std::nullopt, service->at);
-                        if (ec || !socket_.is_open()) break;
-                        input = std::span<const std::uint8_t>(pending).subspan(offset);   // it may have grown
-                    }
+        Served served;
+        if (timed) {
+            co_await serve_timed_frames(*timed, served, served_at, at_end);
+        } else {
+            co_await station::on_home(home_, [&] {
+                begin_frames();
+                while (served.consumed < pending.size() &&
+                       serve_frame(std::span<const std::uint8_t>(pending).subspan(served.consumed), nullptr, served)) {
                 }
-            }
-            auto handled = station_.handle(input, policy_, session_, peer_, service ? &*service : nullptr);
-            auto& outcome = handled.outcome;
-            if (outcome.action == Outcome::Action::NeedMore) break;
-            if (outcome.command != 0) std::tie(last_kind_, last_codec_) = request_shape(input);
-            offset += outcome.consumed;
-            if (outcome.action == Outcome::Action::Respond || outcome.command != 0) ++session_.queued_ahead;   // not skipped garbage
-            if (outcome.action == Outcome::Action::Respond) outbox.add(std::move(outcome.response), handled.delivery);
-            if (outcome.action == Outcome::Action::Close) {
-                close_after = true;
-                reset_after = handled.reset;
-                close_reason_ = outcome.note;
-                break;
-            }
-            if (outcome.action == Outcome::Action::Restart) {   // Remote RESET: no answer; every connection closes
-                close_after = restart_after = true;
-                close_reason_ = "Remote RESET: the CPU restarted";
-                break;
-            }
+            });
         }
-        if (timed) timed->consumed(offset);
-        else pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(offset));
-        note_pending(pending.size(), offset > 0);
+        for (auto& [response, delivery] : served.responses) outbox.add(std::move(response), delivery);
+        waiting_frames = served.waiting;
+        ec = served.ec;
+        if (served.close) close_reason_ = served.close_reason;
+        if (timed) timed->consumed(served.consumed);
+        else pending.erase(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(served.consumed));
+        note_pending(pending.size(), served.consumed > 0);
         if (ec) {
             close_reason_ = "write failed: " + ec.message();
             break;
@@ -229,15 +200,89 @@ awaitable<void> TcpSession::serve() {
             close_reason_ = "write failed: " + ec.message();
             break;
         }
-        if (restart_after) station_.restart();
-        if (reset_after) {   // a scenario's "reset": RST instead of FIN (SO_LINGER 0, no shutdown first)
+        if (served.restart) co_await station::on_home(home_, [this] { station_.restart(); });
+        if (served.reset) {   // a scenario's "reset": RST instead of FIN (SO_LINGER 0, no shutdown first)
             socket_.set_option(asio::socket_base::linger(true, 0), ec);
             socket_.close(ec);
         }
-        if (close_after) break;
+        if (served.close) break;
     }
     outbox_ = nullptr;
     finish(close_reason_);
+}
+
+// Serving the frames of one read begins. They all arrived before any was
+// answered, so they stood in the port's receive buffer together: the
+// commands-per-connection limit counts them (spec §2.3; docs/end-codes.md).
+void TcpSession::begin_frames() {
+    session_.queued_ahead = 0;
+    session_.connections = connections_ ? connections_() : 1;
+}
+
+// The frame at the start of `input` served by the station, its answer and
+// what follows kept in `served`; false when the frames of this read end here.
+bool TcpSession::serve_frame(std::span<const std::uint8_t> input, const station::Service* service, Served& served) {
+    auto handled = station_.handle(input, policy_, session_, peer_, service);
+    auto& outcome = handled.outcome;
+    if (outcome.action == Outcome::Action::NeedMore) return false;
+    if (outcome.command != 0) std::tie(last_kind_, last_codec_) = request_shape(input);
+    served.consumed += outcome.consumed;
+    if (outcome.action == Outcome::Action::Respond || outcome.command != 0) ++session_.queued_ahead;   // not skipped garbage
+    if (outcome.action == Outcome::Action::Respond) served.responses.emplace_back(std::move(outcome.response), handled.delivery);
+    if (outcome.action == Outcome::Action::Close) {
+        served.close = true;
+        served.reset = handled.reset;
+        served.close_reason = outcome.note;
+        return false;
+    }
+    if (outcome.action == Outcome::Action::Restart) {   // Remote RESET: no answer; every connection closes
+        served.close = served.restart = true;
+        served.close_reason = "Remote RESET: the CPU restarted";
+        return false;
+    }
+    return true;
+}
+
+// end_of_scan and model: the frames of one read, each when the clock says.
+// Such a connection lives on the station's strand (TcpListener), so this
+// touches the station and the outbox alike.
+awaitable<void> TcpSession::serve_timed_frames(TimedInput& timed, Served& served,
+                                               std::chrono::steady_clock::time_point served_at, bool at_end) {
+    auto* scan = station_.scan_loop();
+    const auto mode = station_.timing_mode();
+    auto& pending = timed.bytes();
+    begin_frames();
+    while (served.consumed < pending.size()) {
+        auto input = std::span<const std::uint8_t>(pending).subspan(served.consumed);
+        std::optional<station::Service> service;
+        const auto queued = station_.next_request(input, policy_, session_);
+        if (!queued && mode == config::TimingMode::EndOfScan && !at_end) break;
+        if (queued && queued->start == 0) {
+            const auto arrival = timed.arrival(served.consumed + queued->end);
+            if (mode == config::TimingMode::EndOfScan) {
+                service = station::Station::end_of_scan_service(arrival, queued->timer, served_at, at_end);
+                if (!service) {
+                    served.waiting = true;   // this one and those behind it wait for END
+                    break;
+                }
+            } else if ((service = station_.model_service(input, policy_, session_, arrival))) {
+                // model: executed and answered at the modelled time; the
+                // answers before it leave first, and reading goes on.
+                if (service->at > scan->clock().now()) {
+                    for (auto& [response, delivery] : served.responses) outbox_->add(std::move(response), delivery);
+                    served.responses.clear();
+                    sending_ = true;
+                    co_await outbox_->send(served.ec);
+                    sending_ = false;
+                }
+                while (!served.ec && service->at > scan->clock().now() && socket_.is_open() && !scan->stopped())
+                    co_await timed.wait(std::nullopt, service->at);
+                if (served.ec || !socket_.is_open()) break;
+                input = std::span<const std::uint8_t>(pending).subspan(served.consumed);   // it may have grown
+            }
+        }
+        if (!serve_frame(input, service ? &*service : nullptr, served)) break;
+    }
 }
 
 void TcpSession::note_pending(std::size_t pending_bytes, bool consumed_a_frame) {

@@ -15,15 +15,15 @@ using protocol::Outcome;
 
 constexpr std::size_t kMaxPushPeers = 256;   // UDP peers an Ondemand push reaches (docs/timing.md)
 
-UdpListener::UdpListener(asio::io_context& io, station::Station& station, const config::PortConfig& port,
+UdpListener::UdpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
                          const asio::ip::address& bind)
     : station_(station),
       policy_(to_policy(port.data_code)),
       config_(port),
       session_(station.new_session(port)),
-      socket_(io, udp::endpoint(bind, port.port)) {
+      socket_(home, udp::endpoint(bind, port.port)) {
     port_ = socket_.local_endpoint().port();
-    asio::co_spawn(io, serve(), station::log_exception("UDP port " + std::to_string(port_) + ": receive loop failed"));
+    asio::co_spawn(home, serve(), station::log_exception("UDP port " + std::to_string(port_) + ": receive loop failed"));
 }
 
 asio::awaitable<void> UdpListener::serve() {

@@ -15,7 +15,7 @@ namespace slmp::server {
 
 class UdpListener {
 public:
-    UdpListener(boost::asio::io_context& io, station::Station& station, const config::PortConfig& port,
+    UdpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
                 const boost::asio::ip::address& bind);
 
     std::uint16_t port() const { return port_; }

@@ -10,7 +10,7 @@ namespace slmp::station {
 
 namespace asio = boost::asio;
 
-Persistence::Persistence(asio::io_context& io, devicemodel::Cpu& cpu, const config::PersistenceConfig& config,
+Persistence::Persistence(const station::Home& home, devicemodel::Cpu& cpu, const config::PersistenceConfig& config,
                          spdlog::logger& log)
     : cpu_(cpu),
       log_(log),
@@ -18,7 +18,7 @@ Persistence::Persistence(asio::io_context& io, devicemodel::Cpu& cpu, const conf
       units_store_(config.state_dir, "units.bin"),
       interval_(static_cast<std::int64_t>(config.snapshot_interval_s * 1000)),
       restore_all_(config.restore_all),
-      timer_(io) {}
+      timer_(home) {}
 
 void Persistence::restore() {
     auto bytes = store_.load();

@@ -22,7 +22,7 @@ namespace slmp::station {
 class Persistence {
 public:
     // Throws config::ConfigError when the directory cannot be used.
-    Persistence(boost::asio::io_context& io, devicemodel::Cpu& cpu, const config::PersistenceConfig& config,
+    Persistence(const station::Home& home, devicemodel::Cpu& cpu, const config::PersistenceConfig& config,
                 spdlog::logger& log);
 
     // Loads the snapshot if there is one. A damaged or foreign snapshot stops the

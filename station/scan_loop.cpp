@@ -17,9 +17,9 @@ devicemodel::CalendarTime local_calendar(std::chrono::system_clock::time_point n
     return {tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, tm.tm_wday};
 }
 
-ScanLoop::ScanLoop(asio::io_context& io, std::vector<devicemodel::Cpu*> cpus, std::chrono::milliseconds period,
+ScanLoop::ScanLoop(const station::Home& home, std::vector<devicemodel::Cpu*> cpus, std::chrono::milliseconds period,
                    double speed, bool frozen)
-    : timer_(io), cpus_(std::move(cpus)), period_(period), clock_(speed, frozen), last_end_(clock_.now()) {}
+    : timer_(home), cpus_(std::move(cpus)), period_(period), clock_(speed, frozen), last_end_(clock_.now()) {}
 
 void ScanLoop::start() {
     asio::co_spawn(timer_.get_executor(), run(), log_exception("scan cycle stopped"));

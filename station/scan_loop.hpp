@@ -26,7 +26,7 @@ class ScanLoop {
 public:
     // `speed` > 1 runs the CPU's clock faster than the host's (scans still come
     // every `period` of real time, each covering period × speed of CPU time).
-    ScanLoop(boost::asio::io_context& io, std::vector<devicemodel::Cpu*> cpus, std::chrono::milliseconds period,
+    ScanLoop(const station::Home& home, std::vector<devicemodel::Cpu*> cpus, std::chrono::milliseconds period,
              double speed = 1, bool frozen = false);
 
     void start();

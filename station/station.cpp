@@ -21,7 +21,7 @@ using protocol::Outcome;
 Station::Station(config::Profile profile, protocol::EngineOptions options)
     : cpu_(std::move(profile.cpu)), engine_(cpu_, std::move(profile.port), options), timing_model_(profile.timing) {}
 
-Station::Station(boost::asio::io_context& io, const config::ServerConfig& config)
+Station::Station(const station::Home& home, const config::ServerConfig& config)
     : Station(config::resolve_profile(config), protocol::EngineOptions{config.max_request_bytes}) {
     // The scenario files' addresses follow this CPU (FX5: X/Y in octal).
     devicemodel::NumberingScope numbering(cpu_.profile().numbering);
@@ -39,7 +39,7 @@ Station::Station(boost::asio::io_context& io, const config::ServerConfig& config
         config::apply_initial_values(*other_cpus_.back(), cpu.devices);
         engine_.add_cpu(cpu.number, *other_cpus_.back(), std::move(profile.port));
     }
-    start_cpu_runtime(io);
+    start_cpu_runtime(home);
     timing_mode_ = config_.timing.mode;
     timing_model_ = config_.timing.model.over(timing_model_);
     if (timing_mode_ == config::TimingMode::Model)
@@ -54,15 +54,15 @@ void Station::connect(Transports& transports) {
     take_initial_snapshot();
 }
 
-void Station::start_cpu_runtime(boost::asio::io_context& io) {
+void Station::start_cpu_runtime(const station::Home& home) {
     cpu_.runtime().configure(config::checked_runtime_config(config_.cpu, cpu_.profile()), cpu_.memory());
     // Device clears (Remote RUN clear modes, latch clear, reset) re-apply the
     // configured initial values, as the CPU's "device initial value" parameter does.
     cpu_.runtime().set_initial_values([this](devicemodel::DeviceMemory&) { config::apply_initial_values(cpu_, config_.devices); });
-    scan_ = std::make_unique<ScanLoop>(io, all_cpus(), cpu_.runtime().config().scan_time, config_.clock_speed,
+    scan_ = std::make_unique<ScanLoop>(home, all_cpus(), cpu_.runtime().config().scan_time, config_.clock_speed,
                                        config_.clock_frozen);
     if (!config_.persistence.state_dir.empty()) {
-        persistence_ = std::make_unique<Persistence>(io, cpu_, config_.persistence, *log_);
+        persistence_ = std::make_unique<Persistence>(home, cpu_, config_.persistence, *log_);
         persistence_->restore();
         drive_state_ = std::make_unique<DriveState>(config_.persistence.state_dir, cpu_.drives(), cpu_.profile().name, *log_);
         drive_state_->restore();

@@ -61,7 +61,7 @@ public:
     // values (with the --scenario files' initial state), modules and networks,
     // CPU No.2–4, the "cpu" parameters, the scan cycle and the state directory
     // (restored now). Throws config::ConfigError naming the problem.
-    Station(boost::asio::io_context& io, const config::ServerConfig& config);
+    Station(const station::Home& home, const config::ServerConfig& config);
     ~Station();
     Station(const Station&) = delete;
     Station& operator=(const Station&) = delete;
@@ -168,7 +168,7 @@ public:
     bool runs(const scenarios::Scenario& s) const;
 
 private:
-    void start_cpu_runtime(boost::asio::io_context& io);          // "cpu" parameters, scan cycle, state directory
+    void start_cpu_runtime(const station::Home& home);          // "cpu" parameters, scan cycle, state directory
     std::vector<scenarios::Scenario> load_scenarios();            // station_scenarios.cpp
     void start_scenarios(std::vector<scenarios::Scenario> list);
     void take_initial_snapshot();                                 // station_snapshot.cpp; applies --snapshot

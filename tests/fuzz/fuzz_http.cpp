@@ -87,7 +87,7 @@ using Watch = fuzz::WriteWatch;
 // What the HTTP server builds around a station (http_server.cpp), plus an
 // intelligent module (buffer U3) for /api/buffer.
 struct Rig {
-    Rig() : station(profile(), {}), metrics(station), events(io, station), waits(io, events),
+    Rig() : station(profile(), {}), metrics(station), events(home, station), waits(home, events),
             api{station, events, metrics, waits, {"127.0.0.1", {5000}, {5000}, 8080}, {}} {
         station.cpu().add_module(3, "Q62DA", 512, 0x1008);
         // What Station::connect() does when the HTTP API is on, so POST /api/scenarios can load.
@@ -119,6 +119,7 @@ struct Rig {
     NoTransports no_transports;
     // Never run: the event hub only needs it for timers it arms for subscribers.
     boost::asio::io_context io;
+    slmp::station::Home home{boost::asio::make_strand(io)};
     station::Station station;
     control::Metrics metrics;
     control::EventHub events;
