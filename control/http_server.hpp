@@ -1,6 +1,6 @@
 // The HTTP side of slmp-sim: JSON control API, /metrics, /api/events and the
-// web monitor, on its own port. Each request for a station runs on that
-// station's thread (StationSide, on_station), so an API write is atomic with
+// web monitor, on its own port and strand. Each request for a station runs on
+// that station's strand (StationSide, on_station), so an API write is atomic with
 // respect to SLMP requests. "/api/stations/{name}/..." reaches a station of a
 // plant; the routes without it mean the first (or only) station.
 #pragma once

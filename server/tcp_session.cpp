@@ -146,7 +146,8 @@ awaitable<void> TcpSession::serve() {
         // END after its arrival, or until its monitoring timer runs out;
         // what arrives meanwhile is read and served at the same END.
         bool at_end = false;
-        auto served_at = scan ? scan->clock().now() : std::chrono::steady_clock::time_point{};
+        std::chrono::steady_clock::time_point served_at{};
+        if (timed) served_at = scan->clock().now();   // the scan's clock is the station's: timed connections live there
         if (mode == config::TimingMode::EndOfScan) {
             const auto seen = scan->scans();
             for (;;) {

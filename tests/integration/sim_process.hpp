@@ -42,8 +42,15 @@
 
 namespace slmp::test {
 
-inline constexpr std::chrono::seconds kStartTimeout{10};
-inline constexpr std::chrono::seconds kStopTimeout{10};
+// Upper bounds, never waits: a sanitizer's slower binary (scripts/test-tsan.sh
+// sets SLMP_TEST_TIME_SCALE=4: a 200-station plant starts in ~20 s under
+// ThreadSanitizer) gets a multiple of them.
+inline std::chrono::seconds scaled_bound(long seconds) {
+    const char* scale = std::getenv("SLMP_TEST_TIME_SCALE");
+    return std::chrono::seconds(seconds * std::max(1L, scale ? std::atol(scale) : 1L));
+}
+inline const std::chrono::seconds kStartTimeout = scaled_bound(10);
+inline const std::chrono::seconds kStopTimeout = scaled_bound(10);
 
 // A directory under $TMPDIR (or /tmp) removed with its contents on destruction.
 class TempDir {
