@@ -35,6 +35,7 @@ public:
     void remove(Waiter* waiter);
     // Shutdown: every wait ends now (unmet).
     void close_all();
+    std::size_t pending() const { return waiters_.size(); }   // GET /api/info "waits"
 
 private:
     void changed();   // from the write observer: check once the current work is done

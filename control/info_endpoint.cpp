@@ -3,6 +3,7 @@
 // the ports. docs/api.md, "Info".
 #include "config/config.hpp"
 #include "control/api.hpp"
+#include "control/device_waits.hpp"
 #include "control/hex_text.hpp"
 #include "control/timestamp.hpp"
 #include "station/scan_loop.hpp"
@@ -56,6 +57,7 @@ Reply info(Api& api) {
         {"device_sizes", std::move(sizes)},
         {"devices", std::move(devices)},
         {"timing", timing(api.station)},
+        {"waits", api.waits.pending()},
         {"ports", {{"bind", api.ports.bind}, {"tcp", api.ports.tcp}, {"udp", api.ports.udp}, {"http", api.ports.http}}},
     });
 }

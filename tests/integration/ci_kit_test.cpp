@@ -1,10 +1,12 @@
 // The CI user's kit against the real binary (issue 18, docs/ci.md): station
 // snapshots and reset over HTTP, checked over SLMP and HTTP; the frozen and
-// stepped clock; waiting for a value; --check-config. No sleeps: a wait is
-// bounded by its own timeout and by the reply timeout of the test socket.
+// stepped clock; waiting for a value; --check-config. No sleeps for time to
+// pass: a wait is bounded by its own timeout and by the reply timeout of the
+// test socket, and a poll for readiness by the reply timeout.
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "frames.hpp"
@@ -50,6 +52,16 @@ TcpClient send_request(std::uint16_t port, const std::string& target) {
     std::string request = "GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n";
     REQUIRE(c.send(request));
     return c;
+}
+
+// True once /api/info counts `pending` waits (false after the reply timeout).
+bool wait_counted(std::uint16_t port, int pending) {
+    const auto deadline = std::chrono::steady_clock::now() + kReplyTimeout;
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (http_get(port, "/api/info").json()["waits"] == pending) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return false;
 }
 
 HttpResponse read_response(TcpClient& c) {
@@ -327,7 +339,10 @@ TEST_CASE("wait on a label: in the label area and on a device, woken by 141B; FL
     CHECK(answered.json()["condition"] == "equals -1");
 
     // A label on D9000: the device write wakes it.
+    // "changes" counts from when the wait began: the write must come after it,
+    // and the two connections are served in no fixed order.
     auto on_device = send_request(port, "/api/labels/LabelW/wait?changes&timeout_ms=600000");
+    REQUIRE(wait_counted(port, 1));
     REQUIRE(write_label("LabelW", 7) == show(ok(kBin)));
     CHECK(read_response(on_device).status == 200);
     CHECK(words(port, "/api/devices/D9000") == json::array({7}));
