@@ -62,13 +62,13 @@ void TcpSession::start() {
         asio::co_spawn(socket_.get_executor(), watch_deadlines(), log_crash);
 }
 
-void TcpSession::close() {
-    asio::dispatch(socket_.get_executor(), [self = shared_from_this()] { self->close_now(); });
-}
+void TcpSession::close() { close(std::string()); }
 
+// On the connection's strand: the caller may be the station's (the API, a
+// power cut, a Remote RESET, shutdown).
 void TcpSession::close(const std::string& why) {
     asio::dispatch(socket_.get_executor(), [self = shared_from_this(), why] {
-        self->close_reason_ = why;
+        if (!why.empty()) self->close_reason_ = why;
         self->close_now();
     });
 }
@@ -124,6 +124,7 @@ awaitable<void> TcpSession::serve() {
     Outbox outbox(socket_);   // responses on their way out, as scenarios ask (server/outbox.hpp)
     outbox_ = &outbox;
     std::array<std::uint8_t, 8192> chunk;
+    Served served;   // what each read's frames left to do
     bool waiting_frames = false;   // end_of_scan: whole requests still wait for their END
     for (;;) {
         boost::system::error_code ec;
@@ -166,7 +167,7 @@ awaitable<void> TcpSession::serve() {
         }
         if (!socket_.is_open()) break;
 
-        Served served;
+        served.clear();
         if (timed) {
             co_await serve_timed_frames(*timed, served, served_at, at_end);
         } else {
@@ -177,7 +178,7 @@ awaitable<void> TcpSession::serve() {
                 }
             });
         }
-        for (auto& [response, delivery] : served.responses) outbox.add(std::move(response), delivery);
+        served.queue_responses(outbox);
         waiting_frames = served.waiting;
         ec = served.ec;
         if (served.close) close_reason_ = served.close_reason;
@@ -210,6 +211,11 @@ awaitable<void> TcpSession::serve() {
     }
     outbox_ = nullptr;
     finish(close_reason_);
+}
+
+void TcpSession::Served::queue_responses(Outbox& outbox) {
+    for (auto& [response, delivery] : responses) outbox.add(std::move(response), delivery);
+    responses.clear();
 }
 
 // Serving the frames of one read begins. They all arrived before any was
@@ -270,8 +276,7 @@ awaitable<void> TcpSession::serve_timed_frames(TimedInput& timed, Served& served
                 // model: executed and answered at the modelled time; the
                 // answers before it leave first, and reading goes on.
                 if (service->at > scan->clock().now()) {
-                    for (auto& [response, delivery] : served.responses) outbox_->add(std::move(response), delivery);
-                    served.responses.clear();
+                    served.queue_responses(*outbox_);
                     sending_ = true;
                     co_await outbox_->send(served.ec);
                     sending_ = false;

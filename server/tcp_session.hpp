@@ -50,7 +50,8 @@ public:
     station::PushTarget push_target();
 
 private:
-    // What serving the whole frames of one read left for serve() to do.
+    // What serving the whole frames of one read left for serve() to do. One
+    // per connection, cleared for each read (the responses keep their capacity).
     struct Served {
         std::size_t consumed = 0;   // bytes of the input they took
         std::vector<std::pair<std::vector<std::uint8_t>, scenarios::Delivery>> responses;   // not yet in the outbox
@@ -60,6 +61,12 @@ private:
         bool reset = false;         // a scenario's "reset": RST instead of FIN
         std::string close_reason;
         boost::system::error_code ec;   // a write failed while model timing waited
+
+        void clear() {
+            responses.clear();
+            *this = {0, std::move(responses)};
+        }
+        void queue_responses(Outbox& outbox);   // into the outbox, in order; none are left here
     };
     boost::asio::awaitable<void> serve();
     void begin_frames();
