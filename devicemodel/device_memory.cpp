@@ -125,12 +125,15 @@ void DeviceMemory::read_words(const DeviceSpec& spec, std::uint32_t start, std::
         return;
     }
     if (spec.unit == Unit::Word) {
-        // The bulk path of a 960-word read: straight from the store, one bounds check a word.
+        // The bulk path of a 960-word read: straight from the store, one bounds
+        // check for the whole read; words past the store read 0.
         const auto& values = store(spec.area).values;
-        for (std::size_t i = 0; i < out.size(); ++i) {
-            const std::size_t number = start + i;
-            out[i] = number < values.size() ? static_cast<std::uint16_t>(values[number]) : 0;
-        }
+        const std::size_t stored = start < values.size() ? std::min(out.size(), values.size() - start) : 0;
+        std::size_t i = 0;
+        for (; i + 16 <= stored; i += 16)   // blocks of a fixed size: vectorised at -O2 too
+            for (std::size_t k = 0; k < 16; ++k) out[i + k] = static_cast<std::uint16_t>(values[start + i + k]);
+        for (; i < stored; ++i) out[i] = static_cast<std::uint16_t>(values[start + i]);
+        std::fill(out.begin() + static_cast<std::ptrdiff_t>(stored), out.end(), std::uint16_t{0});
         return;
     }
     const auto per_device = words_per_device(spec);

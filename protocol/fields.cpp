@@ -1,5 +1,8 @@
 #include "protocol/fields.hpp"
 
+#include <bit>
+#include <cstring>
+
 #include "protocol/hex.hpp"
 
 namespace slmp::protocol {
@@ -348,6 +351,10 @@ void FieldWriter::words(std::span<const std::uint16_t> values) {
     if (codec_ == Codec::Binary) {
         out_.resize(at + 2 * values.size());
         auto* p = out_.data() + at;
+        if constexpr (std::endian::native == std::endian::little) {   // the wire's order already: one copy
+            if (!values.empty()) std::memcpy(p, values.data(), 2 * values.size());
+            return;
+        }
         for (auto v : values) {
             *p++ = static_cast<std::uint8_t>(v);
             *p++ = static_cast<std::uint8_t>(v >> 8);

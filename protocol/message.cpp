@@ -5,10 +5,10 @@
 namespace slmp::protocol {
 
 std::vector<std::uint8_t> encode_frame(Direction direction, const FrameHeader& header,
-                                       std::span<const std::uint8_t> payload) {
+                                       std::span<const std::uint8_t> payload, std::span<const std::uint8_t> more) {
     FieldWriter w(header.codec);
     // One allocation for the whole frame (the longest header is 30 ASCII characters).
-    w.bytes().reserve(32 + payload.size());
+    w.bytes().reserve(32 + payload.size() + more.size());
     // Subheaders are fixed byte patterns in binary ("50 00") and fixed text in
     // ASCII ("5000"): both are the hex number 0x5000 written most significant
     // byte first, which u8 pairs produce in either codec.
@@ -28,9 +28,10 @@ std::vector<std::uint8_t> encode_frame(Direction direction, const FrameHeader& h
         w.u8(0x00);
         w.u16(header.extended_station);
     }
-    w.u16(static_cast<std::uint16_t>(payload.size()));
+    w.u16(static_cast<std::uint16_t>(payload.size() + more.size()));
     auto& out = w.bytes();
     out.insert(out.end(), payload.begin(), payload.end());
+    out.insert(out.end(), more.begin(), more.end());
     return std::move(out);
 }
 

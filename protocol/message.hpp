@@ -12,9 +12,10 @@
 namespace slmp::protocol {
 
 // 3E, 4E or the station-number-extended frame (binary), with the header's
-// serial, route and extended station No.
+// serial, route and extended station No. The payload is `payload` followed by
+// `more` (a response's end code, then its data: no copy of the data first).
 std::vector<std::uint8_t> encode_frame(Direction direction, const FrameHeader& header,
-                                       std::span<const std::uint8_t> payload);
+                                       std::span<const std::uint8_t> payload, std::span<const std::uint8_t> more = {});
 std::vector<std::uint8_t> encode_frame(Direction direction, FrameKind kind, Codec codec, std::uint16_t serial,
                                        const Route& route, std::span<const std::uint8_t> payload);
 

@@ -19,12 +19,10 @@ Outcome Reply::ok(std::span<const std::uint8_t> data) {
         outcome_.response = encode_response_1e(header_, data);
         return std::move(outcome_);
     }
-    FieldWriter w(header_.codec);
-    w.bytes().reserve(32 + data.size());   // end code, the extended frame's echo, the data: one allocation
-    w.u16(raw(EndCode::Ok));
-    if (header_.kind == FrameKind::Ext) extended_echo(w);
-    w.raw(data);
-    outcome_.response = encode_frame(Direction::Response, header_, w.bytes());
+    FieldWriter head(header_.codec);   // the end code and the extended frame's echo; the data follow
+    head.u16(raw(EndCode::Ok));
+    if (header_.kind == FrameKind::Ext) extended_echo(head);
+    outcome_.response = encode_frame(Direction::Response, header_, head.bytes(), data);
     return std::move(outcome_);
 }
 

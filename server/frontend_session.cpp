@@ -7,10 +7,10 @@
 namespace slmp::server {
 
 namespace asio = boost::asio;
-using asio::awaitable;
-using asio::use_awaitable;
+using station::StrandTask;
+using station::use_strand;
 
-FrontEndSession::FrontEndSession(asio::ip::tcp::socket socket, station::Station& station, std::string protocol,
+FrontEndSession::FrontEndSession(station::StrandSocket socket, station::Station& station, std::string protocol,
                                  FrontEndHandler handler, const config::PortConfig& port,
                                  std::function<void(StreamSession*)> on_closed)
     : socket_(std::move(socket)),
@@ -58,13 +58,13 @@ void FrontEndSession::finish() {
     on_closed_(this);
 }
 
-awaitable<void> FrontEndSession::serve() {
+StrandTask<> FrontEndSession::serve() {
     auto self = shared_from_this();
     std::vector<std::uint8_t> pending;
     std::array<std::uint8_t, 4096> chunk;
     for (;;) {
         boost::system::error_code ec;
-        auto n = co_await socket_.async_read_some(asio::buffer(chunk), asio::redirect_error(use_awaitable, ec));
+        auto n = co_await socket_.async_read_some(asio::buffer(chunk), asio::redirect_error(use_strand, ec));
         if (ec) {
             if (ec != asio::error::eof && ec != asio::error::operation_aborted) close_reason_ = ec.message();
             break;
@@ -92,8 +92,8 @@ awaitable<void> FrontEndSession::serve() {
                     closing = true;
                     break;
                 }
-                asio::steady_timer wait(socket_.get_executor(), step.delay);
-                co_await wait.async_wait(asio::redirect_error(use_awaitable, ec));
+                station::StrandTimer wait(socket_.get_executor(), step.delay);
+                co_await wait.async_wait(asio::redirect_error(use_strand, ec));
             }
             out += step.response;
             if (step.consumed == 0) break;   // a handler that takes nothing would loop forever
@@ -116,10 +116,10 @@ awaitable<void> FrontEndSession::serve() {
     finish();
 }
 
-awaitable<bool> FrontEndSession::send(std::string& out) {
+StrandTask<bool> FrontEndSession::send(std::string& out) {
     if (out.empty() || closed_) co_return !closed_;
     boost::system::error_code ec;
-    co_await asio::async_write(socket_, asio::buffer(out), asio::redirect_error(use_awaitable, ec));
+    co_await asio::async_write(socket_, asio::buffer(out), asio::redirect_error(use_strand, ec));
     out.clear();
     if (ec) {
         close_reason_ = "write failed: " + ec.message();
@@ -128,7 +128,7 @@ awaitable<bool> FrontEndSession::send(std::string& out) {
     co_return true;
 }
 
-awaitable<void> FrontEndSession::watch_deadlines() {
+StrandTask<> FrontEndSession::watch_deadlines() {
     auto self = shared_from_this();
     using clock = std::chrono::steady_clock;
     while (!closed_) {
@@ -142,7 +142,7 @@ awaitable<void> FrontEndSession::watch_deadlines() {
         }
         deadline_timer_.expires_at(deadline);
         boost::system::error_code ec;
-        co_await deadline_timer_.async_wait(asio::redirect_error(use_awaitable, ec));
+        co_await deadline_timer_.async_wait(asio::redirect_error(use_strand, ec));
     }
 }
 

@@ -36,7 +36,7 @@ using FrontEndHandler = std::function<FrontEndStep(std::span<const std::uint8_t>
 class FrontEndSession final : public StreamSession, public std::enable_shared_from_this<FrontEndSession> {
 public:
     // `protocol` names the front end in logs ("host link", "JW-51CM").
-    FrontEndSession(boost::asio::ip::tcp::socket socket, station::Station& station, std::string protocol,
+    FrontEndSession(station::StrandSocket socket, station::Station& station, std::string protocol,
                     FrontEndHandler handler, const config::PortConfig& port, std::function<void(StreamSession*)> on_closed);
 
     void start() override;
@@ -44,12 +44,12 @@ public:
     const protocol::Peer& peer() const override { return peer_; }
 
 private:
-    boost::asio::awaitable<void> serve();
-    boost::asio::awaitable<void> watch_deadlines();
-    boost::asio::awaitable<bool> send(std::string& out);   // false: the write failed
+    station::StrandTask<> serve();
+    station::StrandTask<> watch_deadlines();
+    station::StrandTask<bool> send(std::string& out);   // false: the write failed
     void finish();
 
-    boost::asio::ip::tcp::socket socket_;
+    station::StrandSocket socket_;
     station::Station& station_;
     std::string protocol_;
     FrontEndHandler handler_;
@@ -57,7 +57,7 @@ private:
     std::chrono::milliseconds partial_timeout_;
     std::chrono::steady_clock::time_point last_activity_;
     std::optional<std::chrono::steady_clock::time_point> partial_since_;   // a record begun, not yet whole
-    boost::asio::steady_timer deadline_timer_;
+    station::StrandTimer deadline_timer_;
     std::uint64_t id_;
     protocol::Peer peer_;
     std::string close_reason_ = "closed by the client";

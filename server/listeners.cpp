@@ -86,7 +86,7 @@ void Listeners::listen_hostlink(const station::Home& home, station::Station& sta
     auto* link = hostlink_.get();
 
     auto port = hostlink.port;
-    SessionFactory factory = [&station, link, port](boost::asio::ip::tcp::socket socket,
+    SessionFactory factory = [&station, link, port](station::StrandSocket socket,
                                                     std::function<void(StreamSession*)> on_closed,
                                                     std::function<std::size_t()>) -> std::shared_ptr<StreamSession> {
         // The connection's own state (its QQMR list) lives in its handler.
@@ -121,7 +121,7 @@ void Listeners::listen_jw51cm(const station::Home& home, station::Station& stati
     };
     if (jw.tcp) {
         auto port = *jw.tcp;
-        SessionFactory factory = [&station, link, port](boost::asio::ip::tcp::socket socket,
+        SessionFactory factory = [&station, link, port](station::StrandSocket socket,
                                                         std::function<void(StreamSession*)> on_closed,
                                                         std::function<std::size_t()>) -> std::shared_ptr<StreamSession> {
             FrontEndHandler handler = [&station, link](std::span<const std::uint8_t> pending, std::uint64_t connection,

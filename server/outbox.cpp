@@ -6,8 +6,11 @@ namespace slmp::server {
 
 namespace asio = boost::asio;
 
-Outbox::Outbox(asio::ip::tcp::socket& socket)
-    : socket_(socket), timer_(socket.get_executor()), hold_timer_(socket.get_executor()) {}
+Outbox::Outbox(station::StrandSocket& socket)
+    : socket_(socket), timer_(socket.get_executor()), hold_timer_(socket.get_executor()) {
+    boost::system::error_code ignored;
+    socket_.non_blocking(true, ignored);   // send_now(): a full send buffer is would_block, not a wait
+}
 
 void Outbox::add(std::vector<std::uint8_t> response, const scenarios::Delivery& delivery) {
     if (group_size_ == 0 && delivery.coalesce > 1) {
@@ -19,6 +22,30 @@ void Outbox::add(std::vector<std::uint8_t> response, const scenarios::Delivery& 
     }
     items_.push_back({std::move(response), delivery});
     if (group_size_ > 0 && items_.size() >= group_size_) released_ = true;
+}
+
+bool Outbox::send_now(boost::system::error_code& ec) {
+    if (items_.empty()) return true;
+    if (group_size_ > 0) return false;
+    for (const auto& item : items_)
+        if (!item.delivery.plain()) return false;
+    auto* bytes = &items_.front().bytes;
+    if (items_.size() > 1) {   // several answers of one read: one write, as send() does
+        batch_.clear();
+        for (const auto& item : items_) batch_.insert(batch_.end(), item.bytes.begin(), item.bytes.end());
+        bytes = &batch_;
+    }
+    const auto written = socket_.write_some(asio::buffer(*bytes), ec);
+    if (ec == asio::error::would_block || ec == asio::error::try_again) ec = {};
+    if (ec || written == bytes->size()) {
+        items_.clear();
+        return true;
+    }
+    // The send buffer is full: the rest leaves with send(), asynchronously.
+    std::vector<std::uint8_t> rest(bytes->begin() + static_cast<std::ptrdiff_t>(written), bytes->end());
+    items_.clear();
+    items_.push_back({std::move(rest), {}});
+    return false;
 }
 
 void Outbox::watch_hold() {
@@ -43,19 +70,19 @@ bool Outbox::hold_expired() {
     return true;
 }
 
-asio::awaitable<void> Outbox::wait(std::chrono::microseconds duration) {
+station::StrandTask<> Outbox::wait(std::chrono::microseconds duration) {
     if (duration.count() <= 0) co_return;
     timer_.expires_after(duration);
     boost::system::error_code ignored;
-    co_await timer_.async_wait(asio::redirect_error(asio::use_awaitable, ignored));
+    co_await timer_.async_wait(asio::redirect_error(station::use_strand, ignored));
 }
 
-asio::awaitable<void> Outbox::write(const std::vector<std::uint8_t>& bytes, boost::system::error_code& ec) {
+station::StrandTask<> Outbox::write(const std::vector<std::uint8_t>& bytes, boost::system::error_code& ec) {
     if (bytes.empty() || ec) co_return;
-    co_await asio::async_write(socket_, asio::buffer(bytes), asio::redirect_error(asio::use_awaitable, ec));
+    co_await asio::async_write(socket_, asio::buffer(bytes), asio::redirect_error(station::use_strand, ec));
 }
 
-asio::awaitable<void> Outbox::send(boost::system::error_code& ec) {
+station::StrandTask<> Outbox::send(boost::system::error_code& ec) {
     std::vector<std::uint8_t> batch;   // plain responses go out together
     if (group_size_ > 0 && released_) {
         // The group leaves in one write, after the longest delay any of its responses asked for.

@@ -26,11 +26,15 @@ namespace slmp::server {
 
 class Outbox {
 public:
-    explicit Outbox(boost::asio::ip::tcp::socket& socket);
+    explicit Outbox(station::StrandSocket& socket);
 
     void add(std::vector<std::uint8_t> response, const scenarios::Delivery& delivery);
+    // Without scenario faults, writes what is queued at once, without an
+    // asynchronous operation (the usual case: the answers fit the socket's send
+    // buffer). True when nothing is left for send(). Sets `ec` on a failed write.
+    bool send_now(boost::system::error_code& ec);
     // Writes everything that is not held, in order. Sets `ec` on a failed write.
-    boost::asio::awaitable<void> send(boost::system::error_code& ec);
+    station::StrandTask<> send(boost::system::error_code& ec);
 
     // Before a read: when responses are held, cancels the read at the hold's end.
     void watch_hold();
@@ -43,13 +47,14 @@ private:
         std::vector<std::uint8_t> bytes;
         scenarios::Delivery delivery;
     };
-    boost::asio::awaitable<void> write(const std::vector<std::uint8_t>& bytes, boost::system::error_code& ec);
-    boost::asio::awaitable<void> wait(std::chrono::microseconds duration);
+    station::StrandTask<> write(const std::vector<std::uint8_t>& bytes, boost::system::error_code& ec);
+    station::StrandTask<> wait(std::chrono::microseconds duration);
 
-    boost::asio::ip::tcp::socket& socket_;
-    boost::asio::steady_timer timer_;        // delays and pauses
-    boost::asio::steady_timer hold_timer_;   // the coalescing hold's end
+    station::StrandSocket& socket_;
+    station::StrandTimer timer_;        // delays and pauses
+    station::StrandTimer hold_timer_;   // the coalescing hold's end
     std::deque<Item> items_;
+    std::vector<std::uint8_t> batch_;        // send_now()'s, reused (keeps its capacity)
     std::size_t group_size_ = 0;             // queued responses the coalescing group waits for (0: no group)
     std::chrono::steady_clock::time_point hold_until_{};
     bool released_ = false;

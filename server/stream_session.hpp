@@ -26,7 +26,7 @@ public:
 
 // The client of an accepted connection and the port it reached ("?" when the
 // socket no longer knows); also turns Nagle off, as every session answers at once.
-inline protocol::Peer accepted_peer(boost::asio::ip::tcp::socket& socket) {
+inline protocol::Peer accepted_peer(station::StrandSocket& socket) {
     boost::system::error_code ec;
     protocol::Peer peer;
     peer.transport = protocol::Transport::Tcp;
@@ -60,7 +60,7 @@ inline Deadline next_deadline(std::chrono::steady_clock::time_point last_activit
 // Builds the session for an accepted socket. `on_closed` must be called once
 // when the session ends; `connections` counts the port's open connections.
 using SessionFactory = std::function<std::shared_ptr<StreamSession>(
-    boost::asio::ip::tcp::socket socket, std::function<void(StreamSession*)> on_closed,
+    station::StrandSocket socket, std::function<void(StreamSession*)> on_closed,
     std::function<std::size_t()> connections)>;
 
 }  // namespace slmp::server

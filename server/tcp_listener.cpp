@@ -20,7 +20,7 @@ TcpListener::TcpListener(const station::Home& home, station::Station& station, c
     // throughout: those connections stay on the station's strand.
     own_strands_ = !factory_ && station.timing_mode() == config::TimingMode::Instant;
     if (!factory_)
-        factory_ = [this](tcp::socket socket, std::function<void(StreamSession*)> on_closed,
+        factory_ = [this](station::StrandSocket socket, std::function<void(StreamSession*)> on_closed,
                           std::function<std::size_t()> connections) -> std::shared_ptr<StreamSession> {
             return std::make_shared<TcpSession>(std::move(socket), home_, station_, config_, std::move(on_closed),
                                                 std::move(connections));
@@ -43,9 +43,9 @@ asio::awaitable<void> TcpListener::accept_loop() {
     while (acceptor_.is_open()) {
         boost::system::error_code ec;
         // Accepted into a socket made with its executor: Boost 1.74's converting
-        // move from a strand-typed socket (async_accept(executor, ...)) releases
-        // the strand twice (valgrind: a freed strand_impl on the next wait).
-        tcp::socket socket(own_strands_ ? station::Home(asio::make_strand(home_.get_inner_executor())) : home_);
+        // move of a socket between executor types releases the strand twice
+        // (valgrind: a freed strand_impl on the next wait).
+        station::StrandSocket socket(own_strands_ ? asio::make_strand(home_.get_inner_executor()) : home_);
         co_await acceptor_.async_accept(socket, asio::redirect_error(asio::use_awaitable, ec));
         if (ec) {
             if (ec == asio::error::operation_aborted || !acceptor_.is_open()) co_return;
@@ -67,7 +67,7 @@ asio::awaitable<void> TcpListener::accept_loop() {
     }
 }
 
-bool TcpListener::over_address_cap(const tcp::socket& socket) const {
+bool TcpListener::over_address_cap(const station::StrandSocket& socket) const {
     if (config_.max_connections_per_address == 0) return false;
     boost::system::error_code ec;
     auto remote = socket.remote_endpoint(ec);

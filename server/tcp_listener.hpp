@@ -38,7 +38,7 @@ private:
     void reopen();   // listen() again after the port was closed; logs instead of throwing
     boost::asio::awaitable<void> accept_loop();
     void session_closed(StreamSession* session);
-    bool over_address_cap(const boost::asio::ip::tcp::socket& socket) const;
+    bool over_address_cap(const station::StrandSocket& socket) const;
 
     station::Home home_;
     station::Station& station_;

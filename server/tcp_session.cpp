@@ -10,8 +10,8 @@
 namespace slmp::server {
 
 namespace asio = boost::asio;
-using asio::awaitable;
-using asio::use_awaitable;
+using station::StrandTask;
+using station::use_strand;
 using protocol::Outcome;
 
 protocol::DataCodePolicy to_policy(config::DataCode code) {
@@ -32,7 +32,7 @@ std::pair<protocol::FrameKind, protocol::Codec> request_shape(std::span<const st
     return {FrameKind::E3, Codec::Binary};
 }
 
-TcpSession::TcpSession(asio::ip::tcp::socket socket, station::Home home, station::Station& station,
+TcpSession::TcpSession(station::StrandSocket socket, station::Home home, station::Station& station,
                        const config::PortConfig& port, std::function<void(StreamSession*)> on_closed,
                        std::function<std::size_t()> connections)
     : socket_(std::move(socket)),
@@ -111,7 +111,7 @@ void TcpSession::finish(const std::string& why) {
     });
 }
 
-awaitable<void> TcpSession::serve() {
+StrandTask<> TcpSession::serve() {
     auto self = shared_from_this();   // keeps the session alive while it serves
     auto* scan = station_.scan_loop();
     const auto mode = scan ? station_.timing_mode() : config::TimingMode::Instant;
@@ -130,7 +130,7 @@ awaitable<void> TcpSession::serve() {
         boost::system::error_code ec;
         if (!waiting_frames) {
             outbox.watch_hold();
-            auto n = co_await socket_.async_read_some(asio::buffer(chunk), asio::redirect_error(use_awaitable, ec));
+            auto n = co_await socket_.async_read_some(asio::buffer(chunk), asio::redirect_error(use_strand, ec));
             if (outbox.hold_expired() && ec == asio::error::operation_aborted) ec = {};   // send what a coalescing hold kept
             if (push_pending_ && ec == asio::error::operation_aborted && socket_.is_open()) ec = {};   // an Ondemand push woke the read
             if (ec) {
@@ -171,12 +171,15 @@ awaitable<void> TcpSession::serve() {
         if (timed) {
             co_await serve_timed_frames(*timed, served, served_at, at_end);
         } else {
-            co_await station::on_home(home_, [&] {
-                begin_frames();
-                while (served.consumed < pending.size() &&
-                       serve_frame(std::span<const std::uint8_t>(pending).subspan(served.consumed), nullptr, served)) {
-                }
-            });
+            co_await station::on_home(
+                home_,
+                [&] {
+                    begin_frames();
+                    while (served.consumed < pending.size() &&
+                           serve_frame(std::span<const std::uint8_t>(pending).subspan(served.consumed), nullptr, served)) {
+                    }
+                },
+                use_strand);
         }
         served.queue_responses(outbox);
         waiting_frames = served.waiting;
@@ -192,7 +195,7 @@ awaitable<void> TcpSession::serve() {
         if (!socket_.is_open()) break;
         sending_ = true;
         push_pending_ = false;
-        co_await outbox.send(ec);
+        if (!outbox.send_now(ec)) co_await outbox.send(ec);
         while (push_pending_ && !ec) {   // pushes queued while it wrote
             push_pending_ = false;
             co_await outbox.send(ec);
@@ -202,7 +205,7 @@ awaitable<void> TcpSession::serve() {
             close_reason_ = "write failed: " + ec.message();
             break;
         }
-        if (served.restart) co_await station::on_home(home_, [this] { station_.restart(); });
+        if (served.restart) co_await station::on_home(home_, [this] { station_.restart(); }, use_strand);
         if (served.reset) {   // a scenario's "reset": RST instead of FIN (SO_LINGER 0, no shutdown first)
             socket_.set_option(asio::socket_base::linger(true, 0), ec);
             socket_.close(ec);
@@ -253,8 +256,8 @@ bool TcpSession::serve_frame(std::span<const std::uint8_t> input, const station:
 // end_of_scan and model: the frames of one read, each when the clock says.
 // Such a connection lives on the station's strand (TcpListener), so this
 // touches the station and the outbox alike.
-awaitable<void> TcpSession::serve_timed_frames(TimedInput& timed, Served& served,
-                                               std::chrono::steady_clock::time_point served_at, bool at_end) {
+StrandTask<> TcpSession::serve_timed_frames(TimedInput& timed, Served& served,
+                                            std::chrono::steady_clock::time_point served_at, bool at_end) {
     auto* scan = station_.scan_loop();
     const auto mode = station_.timing_mode();
     auto& pending = timed.bytes();
@@ -305,7 +308,7 @@ void TcpSession::note_pending(std::size_t pending_bytes, bool consumed_a_frame) 
     if (partial_frame_timeout_.count() > 0) deadline_timer_.cancel();   // the watchdog recomputes its deadline
 }
 
-awaitable<void> TcpSession::watch_deadlines() {
+StrandTask<> TcpSession::watch_deadlines() {
     auto self = shared_from_this();
     using clock = std::chrono::steady_clock;
     while (!closed_) {
@@ -325,7 +328,7 @@ awaitable<void> TcpSession::watch_deadlines() {
         }
         deadline_timer_.expires_at(deadline);
         boost::system::error_code ec;
-        co_await deadline_timer_.async_wait(asio::redirect_error(use_awaitable, ec));
+        co_await deadline_timer_.async_wait(asio::redirect_error(use_strand, ec));
     }
 }
 

@@ -35,7 +35,7 @@ class TimedInput;
 class TcpSession final : public StreamSession, public std::enable_shared_from_this<TcpSession> {
 public:
     // Called on the station's home strand (the listener's accept loop).
-    TcpSession(boost::asio::ip::tcp::socket socket, station::Home home, station::Station& station,
+    TcpSession(station::StrandSocket socket, station::Home home, station::Station& station,
                const config::PortConfig& port, std::function<void(StreamSession*)> on_closed,
                std::function<std::size_t()> connections);
 
@@ -68,18 +68,18 @@ private:
         }
         void queue_responses(Outbox& outbox);   // into the outbox, in order; none are left here
     };
-    boost::asio::awaitable<void> serve();
+    station::StrandTask<> serve();
     void begin_frames();
     bool serve_frame(std::span<const std::uint8_t> input, const station::Service* service, Served& served);
-    boost::asio::awaitable<void> serve_timed_frames(TimedInput& timed, Served& served,
-                                                    std::chrono::steady_clock::time_point served_at, bool at_end);
+    station::StrandTask<> serve_timed_frames(TimedInput& timed, Served& served,
+                                             std::chrono::steady_clock::time_point served_at, bool at_end);
     void close_now();
-    boost::asio::awaitable<void> watch_deadlines();
+    station::StrandTask<> watch_deadlines();
     void note_pending(std::size_t pending_bytes, bool consumed_a_frame);
     void finish(const std::string& why);
     void push(std::vector<std::uint8_t> bytes);
 
-    boost::asio::ip::tcp::socket socket_;
+    station::StrandSocket socket_;   // its executor: the connection's own strand, or the station's
     station::Home home_;   // the station's strand
     station::Station& station_;
     protocol::DataCodePolicy policy_;
@@ -89,7 +89,7 @@ private:
     // When the first byte of the frame still incomplete in the buffer arrived; unset when none is.
     std::optional<std::chrono::steady_clock::time_point> partial_since_;
     std::size_t pending_bytes_ = 0;
-    boost::asio::steady_timer deadline_timer_;
+    station::StrandTimer deadline_timer_;
     protocol::Session session_;
     protocol::Peer peer_;   // the client, and the simulator's port it reached
     std::string close_reason_ = "closed by the client";

@@ -4,7 +4,7 @@ namespace slmp::server {
 
 namespace asio = boost::asio;
 
-TimedInput::TimedInput(asio::ip::tcp::socket& socket, station::ScanLoop& clock) : socket_(socket), clock_(clock) {}
+TimedInput::TimedInput(station::StrandSocket& socket, station::ScanLoop& clock) : socket_(socket), clock_(clock) {}
 
 void TimedInput::received(std::size_t n) {
     if (n == 0) return;
@@ -27,7 +27,7 @@ TimedInput::TimePoint TimedInput::arrival(std::size_t end) const {
     return clock_.clock().now();
 }
 
-bool TimedInput::read_available(State& state, asio::ip::tcp::socket& socket, TimePoint now) {
+bool TimedInput::read_available(State& state, station::StrandSocket& socket, TimePoint now) {
     boost::system::error_code ec;
     const auto n = socket.available(ec);
     if (ec || n == 0) return false;   // closed, or readable at its end (EOF): the session's next read sees it
@@ -39,9 +39,9 @@ bool TimedInput::read_available(State& state, asio::ip::tcp::socket& socket, Tim
     return !ec && got > 0;
 }
 
-void TimedInput::watch(const std::shared_ptr<State>& state, asio::ip::tcp::socket& socket, station::ScanLoop& clock) {
+void TimedInput::watch(const std::shared_ptr<State>& state, station::StrandSocket& socket, station::ScanLoop& clock) {
     const auto generation = state->generation;
-    socket.async_wait(asio::ip::tcp::socket::wait_read, [state, &socket, &clock, generation](const boost::system::error_code& ec) {
+    socket.async_wait(station::StrandSocket::wait_read, [state, &socket, &clock, generation](const boost::system::error_code& ec) {
         // After its wait ended the session (and the socket) may be gone: touch nothing.
         if (!state->watching || state->generation != generation) return;
         if (!socket.is_open()) {
@@ -60,7 +60,7 @@ void TimedInput::watch(const std::shared_ptr<State>& state, asio::ip::tcp::socke
     });
 }
 
-asio::awaitable<void> TimedInput::wait(std::optional<std::uint64_t> seen, std::optional<TimePoint> at) {
+station::StrandTask<> TimedInput::wait(std::optional<std::uint64_t> seen, std::optional<TimePoint> at) {
     state_->watching = true;
     ++state_->generation;
     watch(state_, socket_, clock_);

@@ -23,7 +23,7 @@ class TimedInput {
 public:
     using TimePoint = station::VirtualClock::TimePoint;
 
-    TimedInput(boost::asio::ip::tcp::socket& socket, station::ScanLoop& clock);
+    TimedInput(station::StrandSocket& socket, station::ScanLoop& clock);
 
     std::vector<std::uint8_t>& bytes() { return state_->bytes; }
     // `n` bytes were appended to bytes() by a read that just returned.
@@ -36,7 +36,7 @@ public:
     // One wait on the clock (ScanLoop::until_end_or), reading what arrives
     // meanwhile into bytes(). Returns at the END after `seen`, at `at`, or when
     // bytes arrived; the caller re-checks.
-    boost::asio::awaitable<void> wait(std::optional<std::uint64_t> seen, std::optional<TimePoint> at);
+    station::StrandTask<> wait(std::optional<std::uint64_t> seen, std::optional<TimePoint> at);
 
 private:
     struct Stamp {
@@ -51,11 +51,11 @@ private:
         bool watching = false;
         std::uint64_t generation = 0;   // of the wait a readiness handler belongs to
     };
-    static void watch(const std::shared_ptr<State>& state, boost::asio::ip::tcp::socket& socket,
+    static void watch(const std::shared_ptr<State>& state, station::StrandSocket& socket,
                       station::ScanLoop& clock);
-    static bool read_available(State& state, boost::asio::ip::tcp::socket& socket, TimePoint now);
+    static bool read_available(State& state, station::StrandSocket& socket, TimePoint now);
 
-    boost::asio::ip::tcp::socket& socket_;
+    station::StrandSocket& socket_;
     station::ScanLoop& clock_;
     std::shared_ptr<State> state_ = std::make_shared<State>();
 };

@@ -13,7 +13,7 @@
 
 namespace slmp::server {
 
-boost::asio::awaitable<void> send_datagrams(boost::asio::ip::udp::socket& socket, const boost::asio::ip::udp::endpoint& to,
+station::StrandTask<> send_datagrams(station::StrandDatagramSocket& socket, const boost::asio::ip::udp::endpoint& to,
                                             const std::vector<std::uint8_t>& response,
                                             const scenarios::Delivery& delivery, boost::system::error_code& ec);
 

@@ -26,7 +26,7 @@ UdpListener::UdpListener(const station::Home& home, station::Station& station, c
     asio::co_spawn(home, serve(), station::log_exception("UDP port " + std::to_string(port_) + ": receive loop failed"));
 }
 
-asio::awaitable<void> UdpListener::serve() {
+station::StrandTask<> UdpListener::serve() {
     std::array<std::uint8_t, 65536> datagram;
     udp::endpoint sender;
     auto* scan = station_.scan_loop();
@@ -34,7 +34,7 @@ asio::awaitable<void> UdpListener::serve() {
     while (socket_.is_open()) {
         boost::system::error_code ec;
         auto n = co_await socket_.async_receive_from(asio::buffer(datagram), sender,
-                                                     asio::redirect_error(asio::use_awaitable, ec));
+                                                     asio::redirect_error(station::use_strand, ec));
         if (ec) {
             if (ec == asio::error::operation_aborted || !socket_.is_open()) co_return;
             station_.log().debug("UDP port {}: receive failed: {}", port_, ec.message());
@@ -56,7 +56,7 @@ asio::awaitable<void> UdpListener::serve() {
     }
 }
 
-asio::awaitable<void> UdpListener::serve_later(std::vector<std::uint8_t> datagram, udp::endpoint sender,
+station::StrandTask<> UdpListener::serve_later(std::vector<std::uint8_t> datagram, udp::endpoint sender,
                                                std::chrono::steady_clock::time_point arrival,
                                                std::optional<station::Service> model) {
     auto& scan = *station_.scan_loop();
@@ -79,7 +79,7 @@ asio::awaitable<void> UdpListener::serve_later(std::vector<std::uint8_t> datagra
     co_await answer(datagram, sender, service ? &*service : nullptr);
 }
 
-asio::awaitable<void> UdpListener::answer(std::span<const std::uint8_t> input, udp::endpoint sender,
+station::StrandTask<> UdpListener::answer(std::span<const std::uint8_t> input, udp::endpoint sender,
                                           const station::Service* service) {
     const protocol::Peer peer{protocol::Transport::Udp, sender.address().to_string(), sender.port(), port_};
     const auto n = input.size();

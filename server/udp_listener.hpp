@@ -27,20 +27,20 @@ public:
     void push_targets(std::vector<station::PushTarget>& targets);
 
 private:
-    boost::asio::awaitable<void> serve();
+    station::StrandTask<> serve();
     // end_of_scan and model (docs/timing.md): one datagram, held on the
     // virtual clock until it is served, while the port receives the next.
-    boost::asio::awaitable<void> serve_later(std::vector<std::uint8_t> datagram, boost::asio::ip::udp::endpoint sender,
-                                             std::chrono::steady_clock::time_point arrival,
-                                             std::optional<station::Service> model);
-    boost::asio::awaitable<void> answer(std::span<const std::uint8_t> datagram, boost::asio::ip::udp::endpoint sender,
-                                        const station::Service* service);
+    station::StrandTask<> serve_later(std::vector<std::uint8_t> datagram, boost::asio::ip::udp::endpoint sender,
+                                      std::chrono::steady_clock::time_point arrival,
+                                      std::optional<station::Service> model);
+    station::StrandTask<> answer(std::span<const std::uint8_t> datagram, boost::asio::ip::udp::endpoint sender,
+                                 const station::Service* service);
 
     station::Station& station_;
     protocol::DataCodePolicy policy_;
     config::PortConfig config_;   // its settings, for the sessions after a restart
     protocol::Session session_;
-    boost::asio::ip::udp::socket socket_;
+    station::StrandDatagramSocket socket_;
     std::uint16_t port_ = 0;
     struct SeenPeer {
         protocol::FrameKind kind;

@@ -74,7 +74,7 @@ private:
 
 }  // namespace
 
-asio::awaitable<void> ScanLoop::until_end_or(std::optional<std::uint64_t> seen, std::optional<VirtualClock::TimePoint> at) {
+StrandTask<> ScanLoop::until_end_or(std::optional<std::uint64_t> seen, std::optional<VirtualClock::TimePoint> at) {
     asio::steady_timer timer(timer_.get_executor());
     WaiterGuard guard(waiters_, timer);
     const auto now = clock_.now();
@@ -84,7 +84,7 @@ asio::awaitable<void> ScanLoop::until_end_or(std::optional<std::uint64_t> seen, 
     else
         timer.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>((*at - now) / clock_.speed()));
     boost::system::error_code ec;
-    co_await timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+    co_await timer.async_wait(asio::redirect_error(use_strand, ec));
 }
 
 VirtualClock::TimePoint ScanLoop::end_time(std::uint64_t number) const {

@@ -54,7 +54,7 @@ public:
     // Returns at whichever comes first: the END of the scan after the
     // `seen`-th (none: no END ends the wait), CPU time `at` (none: no time
     // limit), or a nudge().
-    boost::asio::awaitable<void> until_end_or(std::optional<std::uint64_t> seen, std::optional<VirtualClock::TimePoint> at);
+    StrandTask<> until_end_or(std::optional<std::uint64_t> seen, std::optional<VirtualClock::TimePoint> at);
     // Wakes every waiter to re-check its condition (a transport read more
     // while it waited: its earliest deadline may have changed).
     void nudge() { wake_waiters(); }

@@ -13,6 +13,8 @@
 //   5. the span fits the configured size → 4031 (iQ-R) / C056 (Q/L);
 //   6. write data decodes and nothing is left over (C061);
 // and only then is memory read or written.
+#include <algorithm>
+#include <array>
 #include <vector>
 
 #include "protocol/commands/handlers.hpp"
@@ -81,7 +83,11 @@ EndCode batch_read(CommandContext& ctx) {
         for (std::uint32_t i = 0; i < points; ++i) bits[i] = memory.bit(*target.spec, target.number + i);
         ctx.out.bits(bits);
     } else {
-        std::vector<std::uint16_t> words(points);
+        // A read of up to 960 words (every frame's limit) needs no heap.
+        std::array<std::uint16_t, 960> on_stack;
+        std::vector<std::uint16_t> on_heap;
+        std::span<std::uint16_t> words = std::span(on_stack).first(std::min<std::size_t>(points, on_stack.size()));
+        if (points > on_stack.size()) words = on_heap = std::vector<std::uint16_t>(points);
         memory.read_words(*target.spec, target.number, words);
         ctx.out.words(words);
     }
