@@ -14,6 +14,9 @@ using asio::ip::udp;
 using protocol::Outcome;
 
 constexpr std::size_t kMaxPushPeers = 256;   // UDP peers an Ondemand push reaches (docs/timing.md)
+// Datagrams already waiting that one wake-up serves before the port lets the
+// station's other work (the scan, the API, its TCP connections) run.
+constexpr int kDatagramsPerTurn = 16;
 
 UdpListener::UdpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
                          const asio::ip::address& bind)
@@ -23,6 +26,7 @@ UdpListener::UdpListener(const station::Home& home, station::Station& station, c
       session_(station.new_session(port)),
       socket_(home, udp::endpoint(bind, port.port)) {
     port_ = socket_.local_endpoint().port();
+    socket_.non_blocking(true);   // a waiting datagram is read, and an answer sent, without an asynchronous operation
     asio::co_spawn(home, serve(), station::log_exception("UDP port " + std::to_string(port_) + ": receive loop failed"));
 }
 
@@ -31,10 +35,18 @@ station::StrandTask<> UdpListener::serve() {
     udp::endpoint sender;
     auto* scan = station_.scan_loop();
     const auto mode = scan ? station_.timing_mode() : config::TimingMode::Instant;
+    int turn = 0;   // datagrams served since the last asynchronous receive
     while (socket_.is_open()) {
-        boost::system::error_code ec;
-        auto n = co_await socket_.async_receive_from(asio::buffer(datagram), sender,
-                                                     asio::redirect_error(station::use_strand, ec));
+        boost::system::error_code ec = asio::error::would_block;
+        std::size_t n = 0;
+        if (turn < kDatagramsPerTurn) n = socket_.receive_from(asio::buffer(datagram), sender, 0, ec);
+        if (ec == asio::error::would_block || ec == asio::error::try_again) {
+            turn = 0;
+            ec = {};
+            n = co_await socket_.async_receive_from(asio::buffer(datagram), sender,
+                                                    asio::redirect_error(station::use_strand, ec));
+        }
+        ++turn;
         if (ec) {
             if (ec == asio::error::operation_aborted || !socket_.is_open()) co_return;
             station_.log().debug("UDP port {}: receive failed: {}", port_, ec.message());
@@ -42,7 +54,7 @@ station::StrandTask<> UdpListener::serve() {
         }
         auto input = std::span<const std::uint8_t>(datagram.data(), n);
         if (mode == config::TimingMode::Instant) {
-            co_await answer(input, sender, nullptr);
+            if (auto later = answer_now(input, sender, nullptr)) co_await send_later(sender, std::move(*later));
             continue;
         }
         // Each datagram waits on the clock by itself, from its arrival
@@ -76,19 +88,23 @@ station::StrandTask<> UdpListener::serve_later(std::vector<std::uint8_t> datagra
                                                         at_end ? scan.end_time(seen + 1) : scan.clock().now(), at_end);
     }
     if (scan.stopped() || !socket_.is_open()) co_return;
-    co_await answer(datagram, sender, service ? &*service : nullptr);
+    if (auto later = answer_now(datagram, sender, service ? &*service : nullptr)) co_await send_later(sender, std::move(*later));
 }
 
-station::StrandTask<> UdpListener::answer(std::span<const std::uint8_t> input, udp::endpoint sender,
-                                          const station::Service* service) {
-    const protocol::Peer peer{protocol::Transport::Udp, sender.address().to_string(), sender.port(), port_};
+protocol::Peer UdpListener::peer_of(const udp::endpoint& sender) const {
+    return {protocol::Transport::Udp, sender.address().to_string(), sender.port(), port_};
+}
+
+std::optional<station::Handled> UdpListener::answer_now(std::span<const std::uint8_t> input, const udp::endpoint& sender,
+                                                        const station::Service* service) {
+    const auto peer = peer_of(sender);
     const auto n = input.size();
     auto handled = station_.handle(input, policy_, session_, peer, service);
     auto& outcome = handled.outcome;
     if (outcome.action == Outcome::Action::NeedMore) {
         station_.log().debug("{} datagram of {} byte(s) holds no whole request frame (check the request data length); "
                              "not answered", peer.text(), n);
-        co_return;
+        return std::nullopt;
     }
     if (outcome.consumed < n)
         station_.log().debug("{} {} byte(s) after the request frame ignored", peer.text(), n - outcome.consumed);
@@ -99,10 +115,19 @@ station::StrandTask<> UdpListener::answer(std::span<const std::uint8_t> input, u
         peers_[sender] = {kind, codec};
     }
     if (outcome.action == Outcome::Action::Restart) station_.restart();
-    if (outcome.action != Outcome::Action::Respond) co_return;
+    if (outcome.action != Outcome::Action::Respond) return std::nullopt;
+    if (!handled.delivery.plain()) return handled;
     boost::system::error_code ec;
-    co_await send_datagrams(socket_, sender, outcome.response, handled.delivery, ec);
+    socket_.send_to(asio::buffer(outcome.response), sender, 0, ec);
+    if (ec == asio::error::would_block || ec == asio::error::try_again) return handled;   // the send buffer is full
     if (ec) station_.log().debug("{} send failed: {}", peer.text(), ec.message());
+    return std::nullopt;
+}
+
+station::StrandTask<> UdpListener::send_later(udp::endpoint sender, station::Handled handled) {
+    boost::system::error_code ec;
+    co_await send_datagrams(socket_, sender, handled.outcome.response, handled.delivery, ec);
+    if (ec) station_.log().debug("{} send failed: {}", peer_of(sender).text(), ec.message());
 }
 
 void UdpListener::restart_session() {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 
 #include "station/asio.hpp"
 
@@ -33,8 +34,13 @@ private:
     station::StrandTask<> serve_later(std::vector<std::uint8_t> datagram, boost::asio::ip::udp::endpoint sender,
                                       std::chrono::steady_clock::time_point arrival,
                                       std::optional<station::Service> model);
-    station::StrandTask<> answer(std::span<const std::uint8_t> datagram, boost::asio::ip::udp::endpoint sender,
-                                 const station::Service* service);
+    // Serves one datagram and sends its answer when it can at once (no
+    // scenario delay or split, room in the send buffer); else returns it.
+    std::optional<station::Handled> answer_now(std::span<const std::uint8_t> datagram,
+                                               const boost::asio::ip::udp::endpoint& sender, const station::Service* service);
+    // The answer answer_now() returned, sent as its delivery asks.
+    station::StrandTask<> send_later(boost::asio::ip::udp::endpoint sender, station::Handled handled);
+    protocol::Peer peer_of(const boost::asio::ip::udp::endpoint& sender) const;
 
     station::Station& station_;
     protocol::DataCodePolicy policy_;
