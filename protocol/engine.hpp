@@ -129,6 +129,9 @@ private:
     CpuSet cpus_{};
     std::array<PortProfile, 4> ports_{};   // the port of each CPU in cpus_
     EngineOptions options_;
+    // What a command writes, kept between requests so its capacity is reused:
+    // no allocation a request (a 960-word read's 1920 bytes included).
+    std::vector<std::uint8_t> command_data_;
 };
 
 }  // namespace slmp::protocol

@@ -153,8 +153,13 @@ Outcome Engine::execute(const Request& request, Session& session) {
         return std::move(*refused);
 
     FieldReader in(request.header.codec, request.data, codec_options(0));
-    FieldWriter out(request.header.codec, codec_options(request.target));
+    FieldWriter out(request.header.codec, codec_options(request.target), std::move(command_data_));
     out.bytes().reserve(64);   // most answers fit; growing from empty cost several allocations a request
+    struct GiveBack {   // the buffer returns to command_data_ when execute() returns, the answer made
+        std::vector<std::uint8_t>& to;
+        FieldWriter& from;
+        ~GiveBack() { to = std::move(from.bytes()); }
+    } give_back{command_data_, out};
     CommandContext ctx{target, ports_[request.target], cpus_, profile, request.header, *spec, request.operands,
                        session, in, out};
     auto code = own_1e_handler ? row_1e->handler(ctx) : spec->handler(ctx);

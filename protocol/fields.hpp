@@ -113,6 +113,11 @@ private:
 class FieldWriter {
 public:
     explicit FieldWriter(Codec codec, CodecOptions options = {}) : codec_(codec), options_(options) {}
+    // Writes into `storage`, emptied first: a buffer kept between uses keeps its capacity.
+    FieldWriter(Codec codec, CodecOptions options, std::vector<std::uint8_t> storage)
+        : codec_(codec), options_(options), out_(std::move(storage)) {
+        out_.clear();
+    }
 
     Codec codec() const { return codec_; }
     void u8(std::uint8_t value) { number(value, 1); }

@@ -19,9 +19,16 @@ Outcome Reply::ok(std::span<const std::uint8_t> data) {
         outcome_.response = encode_response_1e(header_, data);
         return std::move(outcome_);
     }
-    FieldWriter head(header_.codec);   // the end code and the extended frame's echo; the data follow
+    if (header_.kind != FrameKind::Ext) {   // the end code 0000 as the codec writes it, then the data
+        static constexpr std::uint8_t kOkBinary[] = {0x00, 0x00}, kOkAscii[] = {'0', '0', '0', '0'};
+        const auto ok = header_.codec == Codec::Binary ? std::span<const std::uint8_t>(kOkBinary)
+                                                       : std::span<const std::uint8_t>(kOkAscii);
+        outcome_.response = encode_frame(Direction::Response, header_, ok, data);
+        return std::move(outcome_);
+    }
+    FieldWriter head(header_.codec);   // the end code and the extended frame's echo
     head.u16(raw(EndCode::Ok));
-    if (header_.kind == FrameKind::Ext) extended_echo(head);
+    extended_echo(head);
     outcome_.response = encode_frame(Direction::Response, header_, head.bytes(), data);
     return std::move(outcome_);
 }
