@@ -15,6 +15,7 @@ cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 cmake --build build-tsan -j"$(nproc)" --target slmp-sim
 cmake --build build -j"$(nproc)" --target slmp-integration-tests slmp
 export TSAN_OPTIONS="halt_on_error=1:exitcode=66:second_deadlock_stack=1"
-# Start and stop bounds × 4: the instrumented binary starts a 200-station plant in ~20 s.
-export SLMP_TEST_TIME_SCALE=4
+# Start and stop bounds × 8: the instrumented binary starts a 200-station plant in
+# 20–45 s (most of it system time: the sanitizer maps shadow memory for every store).
+export SLMP_TEST_TIME_SCALE=8
 SLMP_SIM_UNDER_TEST="$PWD/build-tsan/server/slmp-sim" build/tests/slmp-integration-tests "$filter"

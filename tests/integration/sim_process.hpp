@@ -43,7 +43,7 @@
 namespace slmp::test {
 
 // Upper bounds, never waits: a sanitizer's slower binary (scripts/test-tsan.sh
-// sets SLMP_TEST_TIME_SCALE=4: a 200-station plant starts in ~20 s under
+// sets SLMP_TEST_TIME_SCALE=8: a 200-station plant starts in 20–45 s under
 // ThreadSanitizer) gets a multiple of them.
 inline std::chrono::seconds scaled_bound(long seconds) {
     const char* scale = std::getenv("SLMP_TEST_TIME_SCALE");

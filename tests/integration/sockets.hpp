@@ -111,6 +111,20 @@ public:
         return TcpClient(fd);
     }
 
+    // Connects with a receive buffer of `bytes` (a client that reads slowly fills
+    // it soon). Set before connect(): shrinking it later would shrink a window
+    // already advertised, which the kernel meets with drops and retransmission backoff.
+    static TcpClient open_with_receive_buffer(std::uint16_t port, int bytes) {
+        int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+        if (fd < 0) throw std::runtime_error("socket() failed");
+        TcpClient client(fd);
+        ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &bytes, sizeof bytes);
+        auto addr = loopback(port, nullptr);
+        if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0)
+            throw std::runtime_error("connect to port " + std::to_string(port) + " failed: " + std::strerror(errno));
+        return client;
+    }
+
     // Connects or throws (for tests where connecting is not what is tested).
     static TcpClient open(std::uint16_t port, const char* destination = nullptr) {
         int error = 0;

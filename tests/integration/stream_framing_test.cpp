@@ -147,3 +147,42 @@ TEST_CASE("A port fixed to one data code skips frames in the other code", "[fram
         CHECK(show(*reply) == show(sentinel_response(kAsc3)));
     }
 }
+
+// An answer is written at once when the socket takes it (Outbox::send_now); one
+// that does not fit waits for the client. A client that sends 3000 960-word
+// reads and reads nothing until all are sent receives 5.8 MB of answers — more
+// than the server's send buffer (4 MB at most) and its own capped receive buffer
+// hold — so some answers meet a full buffer: they must still arrive whole, once
+// and in order (each reads from its own start device, so each answer differs).
+TEST_CASE("Answers that meet a full send buffer arrive whole and in order once the client reads", "[framing][tcp]") {
+    std::vector<std::uint16_t> values(1024);
+    std::string devices;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        values[i] = static_cast<std::uint16_t>(0x1000 + 7 * i);
+        devices += (i ? "," : "") + std::to_string(values[i]);
+    }
+    SimOptions options = with_args({"--profile", "Q26UDEHCPU"});   // no commands-per-connection limit
+    options.config_json = R"({"devices": {"D0": [)" + devices + "]}}";
+    SimProcess sim(options);
+    auto c = TcpClient::open_with_receive_buffer(sim.tcp_port(), 4096);
+
+    constexpr int kRequests = 3000;
+    auto start_of = [](int i) { return static_cast<std::size_t>(i % 64); };
+    Bytes burst;
+    for (int i = 0; i < kRequests; ++i) {
+        auto r = client::read_words(kBin3.options(), addr("D" + std::to_string(start_of(i))), 960);
+        burst.insert(burst.end(), r.begin(), r.end());
+    }
+    REQUIRE(c.send(burst));
+    for (int i = 0; i < kRequests; ++i) {
+        const auto first = values.begin() + static_cast<std::ptrdiff_t>(start_of(i));
+        const auto expected =
+            show(expected_response(kBin3, word_data(kBin3, std::vector<std::uint16_t>(first, first + 960))));
+        const auto got = next(c);
+        if (got != expected)
+            FAIL("answer " << i << " is not D" << start_of(i) << "-D" << start_of(i) + 959 << ": " << got.substr(0, 80));
+    }
+    // Nothing else was sent: the next answer is that of the next request.
+    REQUIRE(c.send(client::read_words(kBin3.options(), addr("D0"), 1)));
+    CHECK(next(c) == show(expected_response(kBin3, word_data(kBin3, {values[0]}))));
+}
