@@ -57,7 +57,7 @@ namespace {
 // Registers a waiting coroutine's timer for as long as it waits.
 class WaiterGuard {
 public:
-    WaiterGuard(const std::shared_ptr<std::vector<asio::steady_timer*>>& list, asio::steady_timer& timer)
+    WaiterGuard(const std::shared_ptr<std::vector<StrandTimer*>>& list, StrandTimer& timer)
         : list_(list), timer_(&timer) {
         list->push_back(timer_);
     }
@@ -68,14 +68,14 @@ public:
     WaiterGuard& operator=(const WaiterGuard&) = delete;
 
 private:
-    std::weak_ptr<std::vector<asio::steady_timer*>> list_;
-    asio::steady_timer* timer_;
+    std::weak_ptr<std::vector<StrandTimer*>> list_;
+    StrandTimer* timer_;
 };
 
 }  // namespace
 
 StrandTask<> ScanLoop::until_end_or(std::optional<std::uint64_t> seen, std::optional<VirtualClock::TimePoint> at) {
-    asio::steady_timer timer(timer_.get_executor());
+    StrandTimer timer(timer_.get_executor());
     WaiterGuard guard(waiters_, timer);
     const auto now = clock_.now();
     if (stopped_ || (seen && scans_ > *seen) || (at && now >= *at)) co_return;
@@ -120,14 +120,14 @@ void ScanLoop::step_time(std::chrono::microseconds by) {
     }
 }
 
-asio::awaitable<void> ScanLoop::run() {
+StrandTask<> ScanLoop::run() {
     auto next = std::chrono::steady_clock::now();
     while (!stopped_) {
         boost::system::error_code ec;
         if (clock_.frozen()) {
             // Nothing scans on its own; run_clock() or stop() cancels this wait.
             timer_.expires_at(std::chrono::steady_clock::time_point::max());
-            co_await timer_.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+            co_await timer_.async_wait(asio::redirect_error(use_strand, ec));
             next = std::chrono::steady_clock::now();
             continue;
         }
@@ -138,7 +138,7 @@ asio::awaitable<void> ScanLoop::run() {
         next += period_;
         if (next < real) next = real;
         timer_.expires_at(next);
-        co_await timer_.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+        co_await timer_.async_wait(asio::redirect_error(use_strand, ec));
     }
 }
 

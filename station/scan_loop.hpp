@@ -65,13 +65,13 @@ public:
     bool stopped() const { return stopped_; }   // at shutdown: waits return at once
 
 private:
-    boost::asio::awaitable<void> run();
+    StrandTask<> run();
     void scan_once();
     void wake_waiters();   // each re-checks its condition against the clock
 
-    using Waiters = std::vector<boost::asio::steady_timer*>;
+    using Waiters = std::vector<StrandTimer*>;
 
-    boost::asio::steady_timer timer_;
+    StrandTimer timer_;   // the strand's own type: no allocation a scan (1000 stations scan 100 000 times a second)
     std::vector<devicemodel::Cpu*> cpus_;
     std::chrono::milliseconds period_;
     VirtualClock clock_;
