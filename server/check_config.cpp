@@ -31,6 +31,7 @@ static void check_station(const config::StationConfig& station_config) {
     NoTransports transports;   // outlives the station that points at it
     station::Station station(boost::asio::make_strand(io), checked);
     station.connect(transports);
+    station.take_initial_snapshot();   // reads --snapshot's file
     if (frontends.hostlink.enabled)
         if (auto problem = frontends.hostlink.options->map.check(station.cpu().memory()); !problem.empty())
             throw config::ConfigError(problem);

@@ -38,6 +38,7 @@ private:
         Listeners listeners;
     };
 
+    void take_initial_snapshots();
     void log_stations() const;
     std::string http_bind() const;
     void write_ready_file() const;

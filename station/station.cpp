@@ -51,7 +51,6 @@ Station::~Station() = default;
 void Station::connect(Transports& transports) {
     transports_ = &transports;
     start_scenarios(std::move(pending_scenarios_));
-    take_initial_snapshot();
 }
 
 void Station::start_cpu_runtime(const station::Home& home) {

@@ -70,6 +70,10 @@ public:
     // Once the transports exist: recordings and scenarios start (a scenario's
     // power cut acts on `transports`, which must outlive the station's use).
     void connect(Transports& transports);
+    // Then, before the io_context runs: the state POST /api/reset returns to,
+    // and --snapshot's file applied. Touches this station alone, so a plant
+    // takes its stations' snapshots on all cores at once (server.cpp).
+    void take_initial_snapshot();                                 // station_snapshot.cpp
     void start();   // the scan cycle and interval snapshots
     void stop();    // at shutdown: the scan stops, faults are summed up, a last snapshot is saved
 
@@ -172,7 +176,6 @@ private:
     void start_cpu_runtime(const station::Home& home);          // "cpu" parameters, scan cycle, state directory
     std::vector<scenarios::Scenario> load_scenarios();            // station_scenarios.cpp
     void start_scenarios(std::vector<scenarios::Scenario> list);
-    void take_initial_snapshot();                                 // station_snapshot.cpp; applies --snapshot
     std::vector<devicemodel::Cpu*> all_cpus();
     // The monitoring timer's answer: CF71 (1E: 60), nothing executed.
     static protocol::Outcome timed_out(const protocol::Request& request, std::chrono::milliseconds timer);
