@@ -195,12 +195,14 @@ StrandTask<> TcpSession::serve() {
         if (!socket_.is_open()) break;
         sending_ = true;
         push_pending_ = false;
-        if (!outbox.send_now(ec)) co_await outbox.send(ec);
+        const bool at_once = outbox.send_now(ec);
+        if (!at_once) co_await outbox.send(ec);
         while (push_pending_ && !ec) {   // pushes queued while it wrote
             push_pending_ = false;
             co_await outbox.send(ec);
         }
         sending_ = false;
+        if (!at_once) resume_watchdog();
         if (ec) {
             close_reason_ = "write failed: " + ec.message();
             break;
@@ -283,6 +285,7 @@ StrandTask<> TcpSession::serve_timed_frames(TimedInput& timed, Served& served,
                     sending_ = true;
                     co_await outbox_->send(served.ec);
                     sending_ = false;
+                    resume_watchdog();
                 }
                 while (!served.ec && service->at > scan->clock().now() && socket_.is_open() && !scan->stopped())
                     co_await timed.wait(std::nullopt, service->at);
@@ -308,12 +311,22 @@ void TcpSession::note_pending(std::size_t pending_bytes, bool consumed_a_frame) 
     if (partial_frame_timeout_.count() > 0) deadline_timer_.cancel();   // the watchdog recomputes its deadline
 }
 
+// While the connection waits on its own write (the client reads slowly) it
+// reads nothing, so a frame left unfinished in its buffer is not the client's
+// doing: the partial-frame deadline waits (the idle one does not: a client that
+// never reads still leaves) and both count again from the write's end.
+void TcpSession::resume_watchdog() {
+    last_activity_ = std::chrono::steady_clock::now();
+    if (partial_since_) partial_since_ = last_activity_;
+    deadline_timer_.cancel();
+}
+
 StrandTask<> TcpSession::watch_deadlines() {
     auto self = shared_from_this();
     using clock = std::chrono::steady_clock;
     while (!closed_) {
-        const auto [deadline, partial] =
-            next_deadline(last_activity_, idle_timeout_, partial_since_, partial_frame_timeout_);
+        const auto [deadline, partial] = next_deadline(last_activity_, idle_timeout_, sending_ ? std::nullopt : partial_since_,
+                                                       partial_frame_timeout_);
         if (clock::now() >= deadline) {
             if (partial) {
                 close_reason_ = "a started frame was not whole " + std::to_string(partial_frame_timeout_.count()) +

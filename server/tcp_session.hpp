@@ -76,6 +76,7 @@ private:
     void close_now();
     station::StrandTask<> watch_deadlines();
     void note_pending(std::size_t pending_bytes, bool consumed_a_frame);
+    void resume_watchdog();
     void finish(const std::string& why);
     void push(std::vector<std::uint8_t> bytes);
 
@@ -98,7 +99,7 @@ private:
     bool closed_ = false;
     Outbox* outbox_ = nullptr;            // serve()'s, while it runs
     bool push_pending_ = false;                 // a push cancelled the read; send it
-    bool sending_ = false;                      // serve() is in outbox.send()
+    bool sending_ = false;                      // serve() is writing (the watchdog waits meanwhile)
     // On the station's strand: the last request's shape, for pushes.
     protocol::FrameKind last_kind_ = protocol::FrameKind::E3;
     protocol::Codec last_codec_ = protocol::Codec::Binary;

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <thread>
 
 #include "frames.hpp"
 #include "link.hpp"
@@ -204,6 +205,33 @@ TEST_CASE("Partial-frame timeout: a connection whose frame stays incomplete is c
     CHECK(std::chrono::steady_clock::now() - started >= 200ms);   // not before the timeout (timer granularity)
     // The idle timeout (300 s by default) did not apply: only the started frame did.
     CHECK(serves(bystander, "AFTER"));
+}
+
+// While the server waits on its own write to a client that reads slowly it
+// reads nothing, so the unfinished frame behind the served ones is not the
+// client's doing: the partial-frame timeout must not close the connection.
+TEST_CASE("Partial-frame timeout: a client slow to read its answers is not closed for the frame the server did not read",
+          "[policy][tcp][partial]") {
+    SimOptions options = with_args({"--partial-frame-timeout", "0.3", "--profile", "Q26UDEHCPU"});   // no pipelining limit
+    SimProcess sim(options);
+    auto c = TcpClient::open_with_receive_buffer(sim.tcp_port(), 4096);
+    // 3000 960-word reads (5.8 MB of answers): the server's first read ends in
+    // the middle of a request (8192 bytes hold 390 whole 21-byte frames).
+    constexpr int kRequests = 3000;
+    Bytes burst;
+    for (int i = 0; i < kRequests; ++i) {
+        auto r = client::read_words(kBin3.options(), addr("D0"), 960);
+        burst.insert(burst.end(), r.begin(), r.end());
+    }
+    REQUIRE(c.send(burst));
+    std::this_thread::sleep_for(1s);   // reads nothing for more than the timeout: the server's write waits
+    const auto answer = show(expected_response(kBin3, word_data(kBin3, std::vector<std::uint16_t>(960, 0))));
+    for (int i = 0; i < kRequests; ++i) {
+        Bytes frame;
+        std::string why;
+        if (!c.response(&frame, kReplyTimeout, &why)) FAIL("answer " << i << " missing: " << why);
+        if (show(frame) != answer) FAIL("answer " << i << " is not 960 zero words");
+    }
 }
 
 TEST_CASE("Partial-frame timeout counts from the frame's first byte, so trickling bytes do not extend it",
