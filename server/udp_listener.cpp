@@ -37,10 +37,11 @@ station::StrandTask<> UdpListener::serve() {
     const auto mode = scan ? station_.timing_mode() : config::TimingMode::Instant;
     int turn = 0;   // datagrams served since the last asynchronous receive
     while (socket_.is_open()) {
-        boost::system::error_code ec = asio::error::would_block;
+        boost::system::error_code ec;
         std::size_t n = 0;
-        if (turn < kDatagramsPerTurn) n = socket_.receive_from(asio::buffer(datagram), sender, 0, ec);
-        if (ec == asio::error::would_block || ec == asio::error::try_again) {
+        const bool turn_over = turn >= kDatagramsPerTurn;
+        if (!turn_over) n = socket_.receive_from(asio::buffer(datagram), sender, 0, ec);
+        if (turn_over || ec == asio::error::would_block || ec == asio::error::try_again) {
             turn = 0;
             ec = {};
             n = co_await socket_.async_receive_from(asio::buffer(datagram), sender,

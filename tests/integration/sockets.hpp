@@ -85,13 +85,17 @@ class TcpClient : public Socket {
 public:
     // Connects to 127.0.0.1:port, from `source` when given (any 127.x.y.z: on
     // Linux all of 127/8 is loopback, so tests can be several client addresses).
-    // Returns nullopt and sets `error` (errno) on failure.
+    // `receive_buffer` > 0: SO_RCVBUF, set before connect() (shrinking it later
+    // would shrink a window already advertised, which the kernel meets with
+    // drops and retransmission backoff). Returns nullopt and sets `error`
+    // (errno) on failure.
     static std::optional<TcpClient> connect(std::uint16_t port, int* error = nullptr, const char* source = nullptr,
-                                            const char* destination = nullptr) {
+                                            const char* destination = nullptr, int receive_buffer = 0) {
         int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
         if (fd < 0) throw std::runtime_error("socket() failed");
         int one = 1;
         ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+        if (receive_buffer > 0) ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &receive_buffer, sizeof receive_buffer);
         if (source) {
             sockaddr_in from{};
             from.sin_family = AF_INET;
@@ -111,24 +115,10 @@ public:
         return TcpClient(fd);
     }
 
-    // Connects with a receive buffer of `bytes` (a client that reads slowly fills
-    // it soon). Set before connect(): shrinking it later would shrink a window
-    // already advertised, which the kernel meets with drops and retransmission backoff.
-    static TcpClient open_with_receive_buffer(std::uint16_t port, int bytes) {
-        int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-        if (fd < 0) throw std::runtime_error("socket() failed");
-        TcpClient client(fd);
-        ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &bytes, sizeof bytes);
-        auto addr = loopback(port, nullptr);
-        if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0)
-            throw std::runtime_error("connect to port " + std::to_string(port) + " failed: " + std::strerror(errno));
-        return client;
-    }
-
     // Connects or throws (for tests where connecting is not what is tested).
-    static TcpClient open(std::uint16_t port, const char* destination = nullptr) {
+    static TcpClient open(std::uint16_t port, const char* destination = nullptr, int receive_buffer = 0) {
         int error = 0;
-        auto client = connect(port, &error, nullptr, destination);
+        auto client = connect(port, &error, nullptr, destination, receive_buffer);
         if (!client) throw std::runtime_error("connect to port " + std::to_string(port) + " failed: " + std::strerror(error));
         return std::move(*client);
     }
