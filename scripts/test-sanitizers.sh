@@ -15,7 +15,7 @@ fuzz_seconds=${FUZZ_SECONDS:-20}
 cmake -S . -B build-asan -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" -DSLMP_FUZZ=ON >/dev/null
 # Only what runs below (slmp-bench is left out: nothing here runs it).
-cmake --build build-asan -j"$(nproc)" --target slmp-unit-tests slmp-integration-tests fuzz-targets
+cmake --build build-asan -j"$(nproc)" --target slmp-unit-tests slmp-program-tests slmp-integration-tests fuzz-targets
 
 # Any report fails the test that hit it: UBSan stops at the first finding
 # (-fno-sanitize-recover) and prints where; ASan's leak check runs at exit.

@@ -1,0 +1,96 @@
+// The user's PLC program on a simulated CPU: compiled once from a Source
+// against the CPU's profile into a flat array of steps with resolved operands,
+// then executed scan by scan (docs/program.md).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "devicemodel/cpu_profile.hpp"
+#include "devicemodel/device_memory.hpp"
+#include "program/source.hpp"
+
+namespace slmp::program {
+
+enum class OnOperationError : std::uint8_t { Stop, Continue };
+enum class OutputModeAtRun : std::uint8_t { Previous, Recalculate };
+
+// cpu.program in the configuration (docs/configuration.md).
+struct ProgramOptions {
+    OnOperationError operation_error = OnOperationError::Stop;
+    std::uint32_t wdt_ms = 200;                   // 10-2000, steps of 10
+    std::uint32_t timer_low_ms = 100;             // OUT T time base
+    std::uint32_t timer_high_ms = 10;             // OUTH T time base
+    OutputModeAtRun output_mode_at_run = OutputModeAtRun::Previous;
+    std::uint64_t max_steps_per_scan = 10'000'000;
+    bool allow_double_timer_coils = false;
+};
+
+// A compiled program: immutable once built; shared by the station and the HTTP API.
+class Program;
+
+// Compiles `source` for `profile`'s CPU. Throws LoadError with every problem
+// (unknown mnemonic, operand count or type, device outside the profile's
+// sizes, missing or duplicate pointer, unbalanced MC/MCR, FOR/NEXT, CALL/RET,
+// a mnemonic the family lacks, no END). `warnings` gets what loads anyway.
+std::shared_ptr<const Program> compile(const Source& source, const devicemodel::CpuProfile& profile,
+                                       const ProgramOptions& options, std::vector<std::string>* warnings = nullptr);
+
+const Source& source_of(const Program& program);
+std::size_t step_count(const Program& program);   // compiled steps (instructions, END included)
+
+// What one scan did.
+struct ScanOutcome {
+    enum class Kind : std::uint8_t {
+        Ok,               // ran to END/FEND (continuation errors, if any, in `error`)
+        StopError,        // an operation error with operation_error = stop: the scan ended at `step`
+        Watchdog,         // the modelled time passed wdt_ms, or max_steps_per_scan
+        StopInstruction,  // STOP executed: the CPU goes to STOP after this scan
+    };
+    Kind kind = Kind::Ok;
+    // The last operation error of the scan (Ok with continue, StopError, Watchdog).
+    struct Error {
+        std::uint16_t code = 0;        // for SD0 in the family's format (Q/L decimal as binary, iQ-R/iQ-F hex)
+        std::size_t step_index = 0;    // index into the compiled steps
+        std::size_t row = 0;           // source row/line
+        std::string mnemonic;
+        std::string message;           // "division by 0"
+    };
+    std::optional<Error> error;
+    std::chrono::nanoseconds modelled{0};   // modelled execution time of the scan (instructions + END processing)
+    std::uint64_t executed = 0;             // instructions executed
+};
+
+// The engine state of one CPU running one program: edge memory per step,
+// timer accumulators, SCJ bits; the stacks live only within a scan.
+class Execution {
+public:
+    explicit Execution(std::shared_ptr<const Program> program);
+    ~Execution();
+    Execution(Execution&&) noexcept;
+    Execution& operator=(Execution&&) noexcept;
+
+    const Program& program() const;
+    // One program execution from step 0 to END/FEND, on `memory` (phase 3 of
+    // the scan). Continuation errors set SM0/SM1/SD0 (and SM56 on Q/L) in
+    // memory themselves; a stop error or watchdog is for the caller to raise.
+    ScanOutcome scan(devicemodel::DeviceMemory& memory);
+    // END processing (phase 5): every timer whose coil is ON accumulates `scan_time`.
+    void end_of_scan(std::chrono::microseconds scan_time);
+    // STOP->RUN, power-on, RESET: edge bits, accumulators and SCJ state cleared.
+    void restart();
+
+    // Engine state for snapshots and persistence (opaque bytes, same program only).
+    std::vector<std::uint8_t> save_state() const;
+    bool restore_state(const std::vector<std::uint8_t>& bytes);
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace slmp::program
