@@ -54,6 +54,11 @@ Source read_source(std::string_view bytes, std::string file);
 // source had none), or the text form (UTF-8).
 std::string write_csv(const Source& source);
 std::string write_text(const Source& source);
+// The steps slmp-sim counts for a line when it numbers an export
+// (docs/program.md "Step numbers"): 1 for a sequence instruction and a
+// pointer label, 4 for OUT/OUTH of a timer or counter with a preset, 1 + the
+// operand count otherwise; 0 for a statement. Not the CPU's real step count.
+std::uint32_t nominal_steps(const SourceLine& line);
 
 // Device comments (cpu.program.comments): GX Works2's 2-column file
 // ("Device Name", "Comment") or GX Converter's device,label,comment CSV.

@@ -1,0 +1,89 @@
+// The plain-text form (docs/program.md "Files"): one instruction a line, an
+// optional step number first, `;;` a kept line statement, `;` and `//`
+// comments, `P10` or `P10:` a pointer label. `*` is the multiplication
+// mnemonic, never a comment.
+#include <algorithm>
+
+#include "program/source_builder.hpp"
+
+namespace slmp::program {
+
+namespace {
+
+bool all_digits(std::string_view s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+std::string without_colon(std::string_view label) {
+    if (label.ends_with(':')) label.remove_suffix(1);
+    return std::string(label);
+}
+
+}  // namespace
+
+void read_text_rows(const std::vector<std::string_view>& rows, Source& source, load_text::Problems& problems) {
+    SourceBuilder builder(source, problems);
+    for (std::size_t index = 0; index < rows.size(); ++index) {
+        const std::size_t row = index + 1;
+        auto text = load_text::trimmed(rows[index]);
+        if (text.empty()) continue;
+        if (auto why = load_text::row_problem(text); !why.empty()) {
+            builder.problem(row, std::nullopt, why);
+            continue;
+        }
+        if (text.starts_with(";;")) {
+            if (builder.ended()) {
+                builder.ignored_after_end(row);
+                continue;
+            }
+            SourceLine line;
+            line.kind = SourceLine::Kind::Statement;
+            line.row = row;
+            line.statement = std::string(load_text::trimmed(text.substr(2)));
+            builder.add(std::move(line));
+            continue;
+        }
+        auto tokens = load_text::split_operands(text.substr(0, load_text::comment_start(text)));
+        if (!tokens) {
+            builder.problem(row, std::nullopt, "a string constant is not closed; end it with \"");
+            continue;
+        }
+        if (tokens->empty()) continue;   // a comment line
+        if (builder.ended()) {
+            builder.ignored_after_end(row);
+            continue;
+        }
+        auto token = tokens->begin();
+        std::optional<std::uint32_t> step;
+        if (all_digits(*token)) {
+            step = load_text::parse_step(*token);
+            if (!step) {
+                builder.problem(row, std::nullopt, "step number " + load_text::quoted_excerpt(*token) + " is too large");
+                continue;
+            }
+            if (++token == tokens->end()) {
+                builder.problem(row, step, "a step number with no instruction after it");
+                continue;
+            }
+        }
+        // "P10" alone is a label; "P10: LD X0" a label and an instruction.
+        if (load_text::is_pointer_label(*token) && (token + 1 == tokens->end() || token->ends_with(':'))) {
+            SourceLine label;
+            label.kind = SourceLine::Kind::Pointer;
+            label.row = row;
+            label.step = step;
+            label.mnemonic = without_colon(*token);
+            builder.add(std::move(label));
+            if (++token == tokens->end()) continue;
+            step.reset();
+        }
+        SourceLine line;
+        line.row = row;
+        line.step = step;
+        line.mnemonic = *token;
+        line.operands.assign(token + 1, tokens->end());
+        if (!builder.add(std::move(line))) return;
+    }
+}
+
+}  // namespace slmp::program
