@@ -483,6 +483,7 @@ struct Compiler {
         }
         if (info->handler == fend && fend_index == SIZE_MAX) fend_index = index;
         if (info->edge || pulse) step.edge = program->edge_count++;
+        step.run = specialised(step.run, step);
         if (pulse) {
             step.body = step.run;
             step.run = pulse_handler();

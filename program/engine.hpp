@@ -69,9 +69,14 @@ struct Operand {
     std::uint8_t bit = 0;         // BitOfWord: 0-15
     std::uint8_t index = kNoIndex;// Z or LZ register number
     bool index_long = false;      // LZ instead of Z
-    std::uint32_t number = 0;     // device number
-    std::uint32_t value = 0;      // Constant / String / Pointer / Nesting
+    // A device operand has a number, the others a value, never both: one word
+    // keeps a step's four operands in 48 bytes.
+    union {
+        std::uint32_t number = 0; // device number
+        std::uint32_t value;      // Constant / String / Pointer / Nesting
+    };
 };
+static_assert(sizeof(Operand) == 12);
 
 struct Machine;
 struct Step;

@@ -73,6 +73,9 @@ SLMP_HANDLER(cj); SLMP_HANDLER(scj); SLMP_HANDLER(jmp); SLMP_HANDLER(goend); SLM
 SLMP_HANDLER(ret); SLMP_HANDLER(for_); SLMP_HANDLER(next); SLMP_HANDLER(break_); SLMP_HANDLER(wdt);
 SLMP_HANDLER(stop);
 
+// The fast form of `general` for this step's operands, or `general` (fast_paths.cpp).
+Handler specialised(Handler general, const Step& step);
+
 // Floats (spec §3.5 float): -0, denormals, NaN and infinities are refused as operands.
 inline bool bad_float(float f) {
     const int c = std::fpclassify(f);
