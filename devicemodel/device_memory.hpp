@@ -67,6 +67,20 @@ public:
 
     void set_write_observer(WriteObserver* observer) { observer_ = observer; }
 
+    // Raw planes for the program engine (program/execution.cpp), which fetches
+    // them once per scan and indexes them itself: bit_plane holds the bits of a
+    // bit area and the contacts of a timer/counter area, coil_plane the coils,
+    // value_plane word, double-word and current values (R: ZR's store). Empty
+    // where the area has no such plane. A writer through these tells the
+    // observer itself: notify() when observed().
+    std::span<std::uint8_t> bit_plane(Area area) { return store(area).bits; }
+    std::span<std::uint8_t> coil_plane(Area area) { return store(area).coils; }
+    std::span<std::uint32_t> value_plane(Area area) { return store(area).values; }
+    bool observed() const { return observer_ != nullptr; }
+    void notify(const DeviceSpec& spec, std::uint32_t first, std::uint32_t count) {
+        if (observer_) observer_->written(spec, first, count);
+    }
+
     // The label area: words the CPU owns for global labels that are not
     // assigned to a device (devicemodel/labels.hpp lays them out). It lives
     // here, beside the devices, so that snapshots and persistence save and

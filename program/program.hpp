@@ -43,6 +43,17 @@ std::shared_ptr<const Program> compile(const Source& source, const devicemodel::
 const Source& source_of(const Program& program);
 std::size_t step_count(const Program& program);   // compiled steps (instructions, END included)
 
+// One compiled step as the HTTP API shows it: the mnemonic as the instruction
+// table names it ("MOVP", "LD<="), the operand texts as written and where the
+// step came from in the source.
+struct CompiledStep {
+    std::string mnemonic;
+    std::vector<std::string> operands;
+    std::size_t row = 0;                        // CSV row / text line
+    std::optional<std::uint32_t> written_step;  // the step number of the source, if it had one
+};
+const std::vector<CompiledStep>& compiled_steps(const Program& program);
+
 // What one scan did.
 struct ScanOutcome {
     enum class Kind : std::uint8_t {
@@ -83,6 +94,17 @@ public:
     void end_of_scan(std::chrono::microseconds scan_time);
     // STOP->RUN, power-on, RESET: edge bits, accumulators and SCJ state cleared.
     void restart();
+
+    // The last operation error or watchdog of any scan since the program was
+    // loaded (GET /api/program); kept over restart(), cleared by clear_last_error().
+    const std::optional<ScanOutcome::Error>& last_error() const;
+    void clear_last_error();
+    // Modelled execution time (instructions + END processing) of the last scan
+    // and the least and most since restart(); 0 before the first scan.
+    struct ModelledTimes {
+        std::chrono::nanoseconds last{0}, min{0}, max{0};
+    };
+    ModelledTimes modelled_times() const;
 
     // Engine state for snapshots and persistence (opaque bytes, same program only).
     std::vector<std::uint8_t> save_state() const;
