@@ -391,7 +391,19 @@ struct Compiler {
         return nullptr;
     }
 
+    // After a line that does not compile, the rung goes on as if it had a
+    // condition, so one mistake gives one message, not one per later line.
     void instruction(const SourceLine& line) {
+        const auto before = problems.size();
+        compile_instruction(line);
+        if (problems.size() != before) {
+            open = 1;
+            after_output = true;
+            branches = 0;
+        }
+    }
+
+    void compile_instruction(const SourceLine& line) {
         const std::string mnemonic = upper(line.mnemonic);
         bool pulse = false;
         const auto* info = lookup(line, mnemonic, pulse);
