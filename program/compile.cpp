@@ -215,6 +215,7 @@ struct Compiler {
             case 'b':
             case 'o':
             case 'x':
+            case 'y':
                 if (!bare_timer && !bit_device)
                     return fail(shown + " is a word device; '" + m + "' needs a bit here (e.g. " + shown + ".0)");
                 if ((type == 'o' || type == 'x') && (bare_timer || is_timer_or_counter(area)))

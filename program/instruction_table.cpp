@@ -180,8 +180,8 @@ const auto kTable = std::to_array<InstructionInfo>({
     row("BSFL", Role::Output, Cost::Block, ALL, true, {"xn", "d n"}, bit_shift, 1),
     row("DSFR", Role::Output, Cost::Block, ALL, true, {"qn", "d n"}, word_shift, 0),
     row("DSFL", Role::Output, Cost::Block, ALL, true, {"qn", "d n"}, word_shift, 1),
-    fx("SFTR", Cost::Block, {"xxnn", "s d n1 n2"}, fx_bit_shift, "BSFR", 0),
-    fx("SFTL", Cost::Block, {"xxnn", "s d n1 n2"}, fx_bit_shift, "BSFL", 1),
+    fx("SFTR", Cost::Block, {"yxnn", "s d n1 n2"}, fx_bit_shift, "BSFR", 0),
+    fx("SFTL", Cost::Block, {"yxnn", "s d n1 n2"}, fx_bit_shift, "BSFL", 1),
 
     // §5.9 bit and data processing
     row("BSET", Role::Output, Cost::Move, ALL, true, {"Wn", "d n"}, bset),
