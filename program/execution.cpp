@@ -138,6 +138,8 @@ void Execution::restart() {
     state_->timed = false;
 }
 
+void Execution::resume() { std::fill(state_->accumulators.begin(), state_->accumulators.end(), 0); }
+
 const std::optional<ScanOutcome::Error>& Execution::last_error() const { return state_->last_error; }
 void Execution::clear_last_error() { state_->last_error.reset(); }
 Execution::ModelledTimes Execution::modelled_times() const { return state_->times; }

@@ -89,6 +89,8 @@ const auto kTable = std::to_array<InstructionInfo>({
     row("MC", Role::Master, Cost::Basic, ALL, false, {"No", "n d"}, mc),
     row("MCR", Role::Free, Cost::Basic, ALL, false, {"N", "n"}, mcr),
     row("NOP", Role::Free, Cost::Basic, ALL, false, none, nop),
+    row("NOPLF", Role::Free, Cost::Basic, ALL, false, none, nop),
+    row("PAGE", Role::Free, Cost::Basic, ALL, false, {"n", "n"}, nop),
     row("END", Role::Free, Cost::Basic, ALL, false, none, end),
     row("FEND", Role::Free, Cost::Basic, ALL, false, none, fend),
 
@@ -222,6 +224,10 @@ const InstructionInfo* find_instruction(std::string_view mnemonic) {
 }
 
 bool known_but_unsupported(std::string_view mnemonic) {
+    // Unsigned (LD=_U ...) and double-float (LDED= ...) compare contacts are phase 2 (spec §5.3).
+    if (mnemonic.ends_with("_U")) return true;
+    for (std::string_view prefix : {"LDED", "ANDED", "ORED"})
+        if (mnemonic.starts_with(prefix)) return true;
     // Interrupts (spec §5.10) and a few common instructions not in phase 1.
     static constexpr std::array<std::string_view, 22> kKnown{
         "DI", "EI", "IRET", "IMASK", "RFS", "COM", "PID", "SORT", "ABS", "DABS", "LIMIT", "DLIMIT",

@@ -131,6 +131,10 @@ TEST_CASE("load errors: structure, availability, operands", "[program][engine][l
     CHECK(one("LD X0 · E+ K1 D0 D2 · END") == "test.il: line 2: 'E+' takes a real number here; write E1 instead of K1");
     CHECK(one("LD X0 · MOV @D0 D1 · END") == "test.il: line 2: '@D0': indirect addressing (@) is not supported by slmp-sim yet");
     CHECK(one("LD X0 · DI · END") == "test.il: line 2: 'DI' is not supported by slmp-sim yet");
+    CHECK(one("LD=_U D0 K1 · OUT Y0 · END") == "test.il: line 1: 'LD=_U' is not supported by slmp-sim yet");
+    CHECK(one("LDED= D0 D4 · OUT Y0 · END") == "test.il: line 1: 'LDED=' is not supported by slmp-sim yet");
+    CHECK(one("LD X0 · OUT Y0 · NOPLF · PAGE K1 · LD X1 · OUT Y1 · END") == "(loads)");
+    CHECK(one("LD X0 · OUT T0 · END") == "test.il: line 2: 'OUT' needs 2 operands (d preset), found 1");
     CHECK(one("LD X0 · MOV K1 · END") == "test.il: line 2: 'MOV' needs 2 operands (s d), found 1");
     CHECK(one("LD X0 · + K1 · END") == "test.il: line 2: '+' needs 2 or 3 operands (s d | s1 s2 d), found 1");
     CHECK(one("LD X0 X1 · OUT Y0 · END") == "test.il: line 1: 'LD' takes 1 operand (s), found 2");

@@ -271,3 +271,16 @@ TEST_CASE("compiled steps keep mnemonic, operands and source row", "[program][en
     CHECK(steps[3].mnemonic == "+");
     CHECK(steps[3].row == 5);
 }
+
+TEST_CASE("resume() after PAUSE: accumulators 0, edge bits kept", "[program][engine][state]") {
+    Rig rig(dotted("LDP X0 · INC D0 · LD X1 · OUT T0 K10 · END"));
+    rig.set("X0", 1);
+    rig.set("X1", 1);
+    rig.scan(9);                  // 80 ms accumulated after scan 9's OUT
+    rig.execution.resume();
+    rig.scan(5);
+    CHECK(rig.get("D0") == 1);    // no new edge
+    CHECK(rig.get("TN0") == 0);   // 40 ms since the resume
+    rig.scan(6);
+    CHECK(rig.get("TN0") == 1);
+}
