@@ -253,24 +253,34 @@ std::string_view family_name(devicemodel::Family family) {
     }
 }
 
-// spec §3.5: Q/L codes are decimal numbers stored as binary (4100 -> 0x1004);
-// iQ-R/iQ-F codes are hexadecimal. Every iQ code and the Q nest codes are
-// inferred (docs/program.md "Operation errors" lists them as unverified).
+// SD0 codes by cause and family (spec §3.5): Q/L codes are decimal numbers
+// stored as binary (4100 -> 0x1004), iQ-R/iQ-F codes hexadecimal. Every iQ
+// code and the Q nest codes are inferred (docs/program.md "Operation errors"
+// lists them as unverified); a profile key may override them later.
+namespace {
+struct ErrorCodes {
+    Cause cause;
+    std::uint16_t q_l;   // QnU, L (and a QJ71E71's CPU)
+    std::uint16_t iq;    // iQ-R, iQ-F
+};
+constexpr std::array<ErrorCodes, 10> kErrorCodes{{
+    {Cause::DivideByZero, 4100, 0x3400},
+    {Cause::Range, 4100, 0x3405},
+    {Cause::Device, 4101, 0x2820},
+    {Cause::Float, 4140, 0x3402},
+    {Cause::NextWithoutFor, 4201, 0x3300},
+    {Cause::ForNest, 4202, 0x3300},
+    {Cause::BreakWithoutFor, 4203, 0x3300},
+    {Cause::ReturnWithoutCall, 4212, 0x3300},
+    {Cause::CallNest, 4213, 0x3300},
+    {Cause::Watchdog, 5001, 0x1810},   // iQ: placeholder of spec §3.4
+}};
+}  // namespace
+
 std::uint16_t error_code(devicemodel::Family family, Cause cause) {
     const bool iq = family == devicemodel::Family::IQR || family == devicemodel::Family::IQF;
-    switch (cause) {
-        case Cause::DivideByZero: return iq ? 0x3400 : 4100;
-        case Cause::Range: return iq ? 0x3405 : 4100;
-        case Cause::Device: return iq ? 0x2820 : 4101;
-        case Cause::Float: return iq ? 0x3402 : 4140;
-        case Cause::ForNest: return iq ? 0x3300 : 4202;
-        case Cause::NextWithoutFor: return iq ? 0x3300 : 4201;
-        case Cause::BreakWithoutFor: return iq ? 0x3300 : 4203;
-        case Cause::ReturnWithoutCall: return iq ? 0x3300 : 4212;
-        case Cause::CallNest: return iq ? 0x3300 : 4213;
-        case Cause::Watchdog: return iq ? 0x1810 : 5001;
-        case Cause::None: break;
-    }
+    for (const auto& entry : kErrorCodes)
+        if (entry.cause == cause) return iq ? entry.iq : entry.q_l;
     return 0;
 }
 
