@@ -144,6 +144,10 @@ TEST_CASE("load errors: structure, availability, operands", "[program][engine][l
     CHECK(one("LD X0 · MC N1 M0 · LD X1 · MC N0 M1 · MCR N0 · MCR N1 · END") ==
           "test.il: line 4: MC N0 inside MC N1: nested levels must increase");
     CHECK(one("LD X0 · MCR N3 · END") == "test.il: line 2: MCR N3 without MC N3");
+    std::string branches = "LD X0";
+    for (int i = 0; i < 17; ++i) branches += " · MPS";
+    CHECK(one(branches + " · OUT Y0 · END") == "test.il: line 18: MPS nested deeper than 16");
+    CHECK(one("LD X0 · MC N15 M0 · END") == "test.il: line 2: N15: nesting levels are N0 to N14");
     CHECK(one("P1 · LD X0 · OUT Y0 · P1 · END") == "test.il: line 4: P1 is defined twice (lines 1 and 4)");
     CHECK(one("LD X0 · CJ P1 · FEND · P1 · RET · END") ==
           "test.il: line 2: 'CJ P1' jumps between the main routine and the subroutines after FEND");

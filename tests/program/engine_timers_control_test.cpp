@@ -284,3 +284,10 @@ TEST_CASE("resume() after PAUSE: accumulators 0, edge bits kept", "[program][eng
     rig.scan(6);
     CHECK(rig.get("TN0") == 1);
 }
+
+TEST_CASE("scan() refuses a memory smaller than the profile", "[program][engine][state]") {
+    auto program = program::compile(dotted("LD X0 · OUT Y0 · END"), r08(), {});
+    program::Execution execution(program);
+    devicemodel::DeviceMemory small(q26().sizes);
+    CHECK_THROWS_AS(execution.scan(small), std::invalid_argument);
+}
