@@ -215,6 +215,7 @@ struct Compiler {
             case 'b':
             case 'o':
             case 'x':
+            case 'y':
                 if (!bare_timer && !bit_device)
                     return fail(shown + " is a word device; '" + m + "' needs a bit here (e.g. " + shown + ".0)");
                 if ((type == 'o' || type == 'x') && (bare_timer || is_timer_or_counter(area)))
@@ -391,7 +392,19 @@ struct Compiler {
         return nullptr;
     }
 
+    // After a line that does not compile, the rung goes on as if it had a
+    // condition, so one mistake gives one message, not one per later line.
     void instruction(const SourceLine& line) {
+        const auto before = problems.size();
+        compile_instruction(line);
+        if (problems.size() != before) {
+            open = 1;
+            after_output = true;
+            branches = 0;
+        }
+    }
+
+    void compile_instruction(const SourceLine& line) {
         const std::string mnemonic = upper(line.mnemonic);
         bool pulse = false;
         const auto* info = lookup(line, mnemonic, pulse);

@@ -2,6 +2,7 @@
 // §4.1). The scan loop below is the only place that walks the steps.
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 #include "program/engine.hpp"
 
@@ -60,6 +61,11 @@ const Program& Execution::program() const { return *state_->program; }
 
 ScanOutcome Execution::scan(devicemodel::DeviceMemory& memory) {
     const Program& program = *state_->program;
+    // The steps were range-checked against the profile's sizes: a smaller memory would be overrun.
+    for (std::size_t a = 0; a < kAreas; ++a)
+        if (memory.size(static_cast<Area>(a)) < program.profile.sizes[a])
+            throw std::invalid_argument("program: device memory is smaller than " + program.profile.name +
+                                        ", the profile the program was compiled for");
     Machine m;
     // Plane base pointers once per scan: memory may have been restored or replaced since the last one.
     for (std::size_t a = 0; a < kAreas; ++a) {
@@ -137,6 +143,8 @@ void Execution::restart() {
     state_->times = {};
     state_->timed = false;
 }
+
+void Execution::resume() { std::fill(state_->accumulators.begin(), state_->accumulators.end(), 0); }
 
 const std::optional<ScanOutcome::Error>& Execution::last_error() const { return state_->last_error; }
 void Execution::clear_last_error() { state_->last_error.reset(); }

@@ -89,6 +89,8 @@ const auto kTable = std::to_array<InstructionInfo>({
     row("MC", Role::Master, Cost::Basic, ALL, false, {"No", "n d"}, mc),
     row("MCR", Role::Free, Cost::Basic, ALL, false, {"N", "n"}, mcr),
     row("NOP", Role::Free, Cost::Basic, ALL, false, none, nop),
+    row("NOPLF", Role::Free, Cost::Basic, ALL, false, none, nop),
+    row("PAGE", Role::Free, Cost::Basic, ALL, false, {"n", "n"}, nop),
     row("END", Role::Free, Cost::Basic, ALL, false, none, end),
     row("FEND", Role::Free, Cost::Basic, ALL, false, none, fend),
 
@@ -180,8 +182,8 @@ const auto kTable = std::to_array<InstructionInfo>({
     row("BSFL", Role::Output, Cost::Block, ALL, true, {"xn", "d n"}, bit_shift, 1),
     row("DSFR", Role::Output, Cost::Block, ALL, true, {"qn", "d n"}, word_shift, 0),
     row("DSFL", Role::Output, Cost::Block, ALL, true, {"qn", "d n"}, word_shift, 1),
-    fx("SFTR", Cost::Block, {"xxnn", "s d n1 n2"}, fx_bit_shift, "BSFR", 0),
-    fx("SFTL", Cost::Block, {"xxnn", "s d n1 n2"}, fx_bit_shift, "BSFL", 1),
+    fx("SFTR", Cost::Block, {"yxnn", "s d n1 n2"}, fx_bit_shift, "BSFR", 0),
+    fx("SFTL", Cost::Block, {"yxnn", "s d n1 n2"}, fx_bit_shift, "BSFL", 1),
 
     // §5.9 bit and data processing
     row("BSET", Role::Output, Cost::Move, ALL, true, {"Wn", "d n"}, bset),
@@ -222,6 +224,10 @@ const InstructionInfo* find_instruction(std::string_view mnemonic) {
 }
 
 bool known_but_unsupported(std::string_view mnemonic) {
+    // Unsigned (LD=_U ...) and double-float (LDED= ...) compare contacts are phase 2 (spec §5.3).
+    if (mnemonic.ends_with("_U")) return true;
+    for (std::string_view prefix : {"LDED", "ANDED", "ORED"})
+        if (mnemonic.starts_with(prefix)) return true;
     // Interrupts (spec §5.10) and a few common instructions not in phase 1.
     static constexpr std::array<std::string_view, 22> kKnown{
         "DI", "EI", "IRET", "IMASK", "RFS", "COM", "PID", "SORT", "ABS", "DABS", "LIMIT", "DLIMIT",
@@ -247,24 +253,34 @@ std::string_view family_name(devicemodel::Family family) {
     }
 }
 
-// spec §3.5: Q/L codes are decimal numbers stored as binary (4100 -> 0x1004);
-// iQ-R/iQ-F codes are hexadecimal. Every iQ code and the Q nest codes are
-// inferred (docs/program.md "Operation errors" lists them as unverified).
+// SD0 codes by cause and family (spec §3.5): Q/L codes are decimal numbers
+// stored as binary (4100 -> 0x1004), iQ-R/iQ-F codes hexadecimal. Every iQ
+// code and the Q nest codes are inferred (docs/program.md "Operation errors"
+// lists them as unverified); a profile key may override them later.
+namespace {
+struct ErrorCodes {
+    Cause cause;
+    std::uint16_t q_l;   // QnU, L (and a QJ71E71's CPU)
+    std::uint16_t iq;    // iQ-R, iQ-F
+};
+constexpr std::array<ErrorCodes, 10> kErrorCodes{{
+    {Cause::DivideByZero, 4100, 0x3400},
+    {Cause::Range, 4100, 0x3405},
+    {Cause::Device, 4101, 0x2820},
+    {Cause::Float, 4140, 0x3402},
+    {Cause::NextWithoutFor, 4201, 0x3300},
+    {Cause::ForNest, 4202, 0x3300},
+    {Cause::BreakWithoutFor, 4203, 0x3300},
+    {Cause::ReturnWithoutCall, 4212, 0x3300},
+    {Cause::CallNest, 4213, 0x3300},
+    {Cause::Watchdog, 5001, 0x1810},   // iQ: placeholder of spec §3.4
+}};
+}  // namespace
+
 std::uint16_t error_code(devicemodel::Family family, Cause cause) {
     const bool iq = family == devicemodel::Family::IQR || family == devicemodel::Family::IQF;
-    switch (cause) {
-        case Cause::DivideByZero: return iq ? 0x3400 : 4100;
-        case Cause::Range: return iq ? 0x3405 : 4100;
-        case Cause::Device: return iq ? 0x2820 : 4101;
-        case Cause::Float: return iq ? 0x3402 : 4140;
-        case Cause::ForNest: return iq ? 0x3300 : 4202;
-        case Cause::NextWithoutFor: return iq ? 0x3300 : 4201;
-        case Cause::BreakWithoutFor: return iq ? 0x3300 : 4203;
-        case Cause::ReturnWithoutCall: return iq ? 0x3300 : 4212;
-        case Cause::CallNest: return iq ? 0x3300 : 4213;
-        case Cause::Watchdog: return iq ? 0x1810 : 5001;
-        case Cause::None: break;
-    }
+    for (const auto& entry : kErrorCodes)
+        if (entry.cause == cause) return iq ? entry.iq : entry.q_l;
     return 0;
 }
 

@@ -26,7 +26,8 @@ enum class Role : std::uint8_t {
 };
 
 // Operand types, one letter per operand (compile.cpp resolves them):
-//   b bit read          o bit write (no X)       x bit device start (block of bits)
+//   b bit read          o bit write (no X)       x bit device start (block of bits written)
+//   y bit device start (block of bits read)
 //   w 16-bit source     W 16-bit destination     n count (16-bit source)
 //   d 32-bit source     D 32-bit destination
 //   v 16-bit destination of two words (/: quotient, remainder)

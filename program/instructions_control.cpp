@@ -18,6 +18,7 @@ SLMP_HANDLER(scj) {
 }
 SLMP_HANDLER(jmp) { m.pc = s.op[0].value; }
 SLMP_HANDLER(goend) {
+    (void)s;
     if (m.condition()) m.pc = static_cast<std::uint32_t>(m.program->end_step);
 }
 SLMP_HANDLER(call) {

@@ -69,7 +69,10 @@ SLMP_HANDLER(orb) { m.acc = m.stack[s.slot] | m.acc; }
 SLMP_HANDLER(mps) { m.branch[s.slot] = m.acc; }
 SLMP_HANDLER(mrd) { m.acc = m.branch[s.slot]; }
 SLMP_HANDLER(mpp) { m.acc = m.branch[s.slot]; }
-SLMP_HANDLER(inv) { m.acc = !m.acc; }
+SLMP_HANDLER(inv) {
+    (void)s;
+    m.acc = !m.acc;
+}
 SLMP_HANDLER(mep) {
     bool& before = edge_of(m, s);
     const bool now = m.acc & !m.mc_off;
