@@ -81,7 +81,10 @@ void read_gx_works_rows(const std::vector<std::string_view>& rows, char separato
         std::vector<std::string> cells(columns);
         for (std::size_t k = 0; k < fields->size(); ++k) cells[k] = std::string(load_text::trimmed((*fields)[k]));
         if (std::all_of(cells.begin(), cells.end(), [](const std::string& c) { return c.empty(); })) continue;
-        if (builder.ended()) {
+        // END's own continuation rows (an END with operands is the
+        // compiler's to refuse) are not text after it.
+        const bool continuation = cells[LineStatement].empty() && cells[Instruction].empty() && !cells[Device].empty();
+        if (builder.ended() && !(continuation && builder.open_instruction())) {
             builder.ignored_after_end(row);
             continue;
         }
