@@ -21,11 +21,12 @@ std::string without_colon(std::string_view label) {
 
 }  // namespace
 
-void read_text_rows(const std::vector<std::string_view>& rows, Source& source, load_text::Problems& problems) {
+void read_text_rows(std::string_view file_text, Source& source, load_text::Problems& problems) {
     SourceBuilder builder(source, problems);
-    for (std::size_t index = 0; index < rows.size(); ++index) {
-        const std::size_t row = index + 1;
-        auto text = load_text::trimmed(rows[index]);
+    load_text::RowCursor rows(file_text);
+    while (auto physical = rows.next()) {
+        const std::size_t row = rows.number();
+        auto text = load_text::trimmed(*physical);
         if (text.empty()) continue;
         if (auto why = load_text::row_problem(text); !why.empty()) {
             builder.problem(row, std::nullopt, why);

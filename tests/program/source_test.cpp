@@ -214,3 +214,15 @@ TEST_CASE("an empty file is an empty text program") {
     CHECK(s.format == Format::Text);
     CHECK(s.lines.empty());
 }
+
+TEST_CASE("spreadsheet leftovers: empty trailing fields in rows 1 and 2, short data rows, blank rows") {
+    auto s = read_source(
+        "MAIN,,,,,,\r\nPLC Information:,QCPU (Q mode) Q03UDV,,,,,\r\nStep No.,Line Statement,Instruction,I/O(Device),Blank,PI Statement,Note\r\n"
+        "0,,LD,X0\r\n\r\n,,,,,,\r\n1,,OUT,T0\r\n,,,K20\r\n5,,END\r\n",
+        "sheet.csv");
+    CHECK(s.name == "MAIN");
+    CHECK(s.plc_info == "QCPU (Q mode) Q03UDV");
+    CHECK(summary(s) == Lines{"LD X0", "OUT T0 K20", "END"});
+    CHECK(s.lines[1].row == 7);
+    CHECK(s.warnings.empty());
+}
