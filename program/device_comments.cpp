@@ -23,34 +23,28 @@ bool plausible_device(std::string_view device) {
            });
 }
 
-std::size_t used_fields(const std::vector<std::string>& fields) {
-    std::size_t n = fields.size();
-    while (n > 0 && load_text::trimmed(fields[n - 1]).empty()) --n;
-    return n;
-}
-
 }  // namespace
 
 std::vector<DeviceComment> read_comments(std::string_view bytes, std::string file) {
     auto decoded = load_text::decode_file(bytes, file);
-    auto rows = load_text::split_rows(decoded.text);
     load_text::Problems problems(file);
     // GX Converter's TEXT files must not hold a TAB, so one means the TAB layout.
     const char separator = decoded.text.find('\t') != std::string::npos ? '\t' : ',';
     std::vector<DeviceComment> comments;
     std::size_t header_columns = 0;   // 0 until the column-name row is passed
-    for (std::size_t index = 0; index < rows.size(); ++index) {
-        const std::string where = "row " + std::to_string(index + 1) + ": ";
-        if (auto why = load_text::row_problem(rows[index]); !why.empty()) {
+    load_text::RowCursor rows(decoded.text);
+    while (auto record = rows.next()) {
+        const std::string where = "row " + std::to_string(rows.number()) + ": ";
+        if (auto why = load_text::row_problem(*record); !why.empty()) {
             problems.add(where + why);
             continue;
         }
-        auto fields = load_text::split_record(rows[index], separator);
+        auto fields = load_text::split_record(*record, separator);
         if (!fields) {
             problems.add(where + "a quote opens a field and is never closed");
             continue;
         }
-        auto used = used_fields(*fields);
+        auto used = load_text::used_fields(*fields);
         if (used == 0) continue;
         if (header_columns == 0) {
             // The title row has one field; the column names are the first

@@ -118,17 +118,14 @@ DecodedFile decode_file(std::string_view bytes, const std::string& file) {
     return {std::string(bytes), false};
 }
 
-std::vector<std::string_view> split_rows(std::string_view text) {
-    std::vector<std::string_view> rows;
-    while (!text.empty()) {
-        auto end = text.find('\n');
-        auto row = text.substr(0, end);
-        if (row.ends_with('\r')) row.remove_suffix(1);
-        rows.push_back(row);
-        if (end == std::string_view::npos) break;
-        text.remove_prefix(end + 1);
-    }
-    return rows;
+std::optional<std::string_view> RowCursor::next() {
+    if (rest_.empty()) return std::nullopt;
+    auto end = rest_.find('\n');
+    auto row = rest_.substr(0, end);
+    rest_.remove_prefix(end == std::string_view::npos ? rest_.size() : end + 1);
+    if (row.ends_with('\r')) row.remove_suffix(1);
+    ++number_;
+    return row;
 }
 
 std::string row_problem(std::string_view row) {
@@ -194,6 +191,14 @@ std::optional<std::vector<std::string>> split_record(std::string_view row, char 
     }
     return fields;
 }
+
+std::size_t used_fields(const std::vector<std::string>& fields) {
+    std::size_t n = fields.size();
+    while (n > 0 && trimmed(fields[n - 1]).empty()) --n;
+    return n;
+}
+
+std::string fields_count(std::size_t n) { return std::to_string(n) + (n == 1 ? " field" : " fields"); }
 
 std::string_view trimmed(std::string_view s) {
     while (!s.empty() && blank(s.front())) s.remove_prefix(1);

@@ -48,9 +48,22 @@ struct DecodedFile {
 // naming the file and what it is.
 DecodedFile decode_file(std::string_view bytes, const std::string& file);
 
-// Rows split on LF, a CR before the LF removed (CR LF and LF files alike).
-// A final empty piece after the last line end is not a row.
-std::vector<std::string_view> split_rows(std::string_view text);
+// The rows of decoded text one at a time, split on LF with a CR before the
+// LF removed (CR LF and LF files alike); a final empty piece after the last
+// line end is not a row. One at a time because a 10 MiB file of line ends
+// would be millions of rows at once.
+class RowCursor {
+public:
+    explicit RowCursor(std::string_view text) : rest_(text) {}
+    // The next row, or nullopt at the end of the text.
+    std::optional<std::string_view> next();
+    // The 1-based number of the row next() returned last.
+    std::size_t number() const { return number_; }
+
+private:
+    std::string_view rest_;
+    std::size_t number_ = 0;
+};
 
 // Why a row cannot be read as text, if it cannot: too long, or a control
 // character other than TAB (C0, DEL, C1). "" when the row is fine.
@@ -62,6 +75,13 @@ std::string row_problem(std::string_view row);
 // variant (a comma-CSV tool re-saved the TAB file) and is parsed again as a
 // TAB record. nullopt: a quote opened and never closed.
 std::optional<std::vector<std::string>> split_record(std::string_view row, char separator);
+
+// The fields of a record up to its last non-blank one: spreadsheets leave
+// empty fields at the end of short rows.
+std::size_t used_fields(const std::vector<std::string>& fields);
+
+// "1 field", "8 fields".
+std::string fields_count(std::size_t n);
 
 // Blanks (space, TAB) at both ends removed.
 std::string_view trimmed(std::string_view s);

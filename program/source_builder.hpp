@@ -53,8 +53,7 @@ private:
 };
 
 // The readers behind read_source, on decoded rows.
-void read_gx_works_rows(const std::vector<std::string_view>& rows, char separator, Source& source,
-                        load_text::Problems& problems);
-void read_text_rows(const std::vector<std::string_view>& rows, Source& source, load_text::Problems& problems);
+void read_gx_works_rows(std::string_view text, char separator, Source& source, load_text::Problems& problems);
+void read_text_rows(std::string_view text, Source& source, load_text::Problems& problems);
 
 }  // namespace slmp::program

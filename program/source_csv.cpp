@@ -14,13 +14,6 @@ namespace {
 constexpr std::size_t columns = 7;
 enum Column : std::size_t { StepNo, LineStatement, Instruction, Device, Blank, PiStatement, Note };
 
-// Row 1 and 2 fields without the empty ones a spreadsheet may leave at the end.
-std::size_t used_fields(const std::vector<std::string>& fields) {
-    std::size_t n = fields.size();
-    while (n > 0 && load_text::trimmed(fields[n - 1]).empty()) --n;
-    return n;
-}
-
 std::string program_name(std::string_view field) {
     auto name = load_text::trimmed(field);
     // Some generators write "(MAIN)".
@@ -34,34 +27,34 @@ std::string note_of(const std::vector<std::string>& cells) {
 
 }  // namespace
 
-void read_gx_works_rows(const std::vector<std::string_view>& rows, char separator, Source& source,
-                        load_text::Problems& problems) {
+void read_gx_works_rows(std::string_view text, char separator, Source& source, load_text::Problems& problems) {
     SourceBuilder builder(source, problems);
-    for (std::size_t index = 0; index < rows.size(); ++index) {
-        const std::size_t row = index + 1;
-        if (auto why = load_text::row_problem(rows[index]); !why.empty()) {
+    load_text::RowCursor rows(text);
+    while (auto record = rows.next()) {
+        const std::size_t row = rows.number();
+        if (auto why = load_text::row_problem(*record); !why.empty()) {
             builder.problem(row, std::nullopt, why);
             continue;
         }
-        auto fields = load_text::split_record(rows[index], separator);
+        auto fields = load_text::split_record(*record, separator);
         if (!fields) {
             builder.problem(row, std::nullopt, "a quote opens a field and is never closed");
             continue;
         }
         if (row == 1) {
-            if (used_fields(*fields) > 1) {
+            if (load_text::used_fields(*fields) > 1) {
                 builder.problem(row, std::nullopt,
-                                "has " + std::to_string(used_fields(*fields)) +
-                                    " fields; a GX Works list starts with the program name alone");
+                                "has " + load_text::fields_count(load_text::used_fields(*fields)) +
+                                    "; a GX Works list starts with the program name alone");
             }
             source.name = program_name(fields->front());
             continue;
         }
         if (row == 2) {
-            if (used_fields(*fields) > 2) {
+            if (load_text::used_fields(*fields) > 2) {
                 builder.problem(row, std::nullopt,
-                                "has " + std::to_string(used_fields(*fields)) +
-                                    " fields; the second row of a GX Works list is 'PLC Information:' and the CPU type");
+                                "has " + load_text::fields_count(load_text::used_fields(*fields)) +
+                                    "; the second row of a GX Works list is 'PLC Information:' and the CPU type");
             }
             if (fields->size() >= 2) source.plc_info = std::string(load_text::trimmed((*fields)[1]));
             continue;
@@ -69,19 +62,22 @@ void read_gx_works_rows(const std::vector<std::string_view>& rows, char separato
         if (row == 3) {
             if (fields->size() != columns) {
                 builder.problem(row, std::nullopt,
-                                "has " + std::to_string(fields->size()) +
-                                    " fields; the column-name row of a GX Works list has 7");
+                                "has " + load_text::fields_count(fields->size()) +
+                                    "; the column-name row of a GX Works list has 7");
             }
             continue;
         }
         if (fields->size() > columns) {
-            builder.problem(row, std::nullopt, "has " + std::to_string(fields->size()) + " fields, a GX Works list has 7");
+            builder.problem(row, std::nullopt, "has " + load_text::fields_count(fields->size()) + ", a GX Works list has 7");
             continue;
         }
         std::vector<std::string> cells(columns);
         for (std::size_t k = 0; k < fields->size(); ++k) cells[k] = std::string(load_text::trimmed((*fields)[k]));
         if (std::all_of(cells.begin(), cells.end(), [](const std::string& c) { return c.empty(); })) continue;
-        if (builder.ended()) {
+        // END's own continuation rows (an END with operands is the
+        // compiler's to refuse) are not text after it.
+        const bool continuation = cells[LineStatement].empty() && cells[Instruction].empty() && !cells[Device].empty();
+        if (builder.ended() && !(continuation && builder.open_instruction())) {
             builder.ignored_after_end(row);
             continue;
         }

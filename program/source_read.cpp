@@ -10,10 +10,13 @@ namespace {
 
 // The separator of a GX Works list, judged by its column-name row (row 3),
 // or 0 when row 3 has not 7 TAB- or comma-separated fields.
-char list_separator(const std::vector<std::string_view>& rows) {
-    if (rows.size() < 3) return 0;
+char list_separator(std::string_view text) {
+    load_text::RowCursor rows(text);
+    std::optional<std::string_view> third;
+    for (int k = 0; k < 3; ++k) third = rows.next();
+    if (!third) return 0;
     for (char separator : {'\t', ','}) {
-        auto fields = load_text::split_record(rows[2], separator);
+        auto fields = load_text::split_record(*third, separator);
         if (fields && fields->size() == 7) return separator;
     }
     return 0;
@@ -23,19 +26,18 @@ char list_separator(const std::vector<std::string_view>& rows) {
 
 Source read_source(std::string_view bytes, std::string file) {
     auto decoded = load_text::decode_file(bytes, file);
-    auto rows = load_text::split_rows(decoded.text);
     Source source;
     source.file = file;
     load_text::Problems problems(std::move(file));
-    char separator = list_separator(rows);
+    char separator = list_separator(decoded.text);
     // The UTF-16 BOM is GX Works' own mark: such a file is a list even when
     // its third row is damaged, and the list reader says what is wrong.
     if (decoded.utf16 || separator != 0) {
         source.format = Format::GxWorksCsv;
-        read_gx_works_rows(rows, separator != 0 ? separator : '\t', source, problems);
+        read_gx_works_rows(decoded.text, separator != 0 ? separator : '\t', source, problems);
     } else {
         source.format = Format::Text;
-        read_text_rows(rows, source, problems);
+        read_text_rows(decoded.text, source, problems);
     }
     problems.throw_if_any();
     return source;

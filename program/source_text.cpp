@@ -21,11 +21,12 @@ std::string without_colon(std::string_view label) {
 
 }  // namespace
 
-void read_text_rows(const std::vector<std::string_view>& rows, Source& source, load_text::Problems& problems) {
+void read_text_rows(std::string_view file_text, Source& source, load_text::Problems& problems) {
     SourceBuilder builder(source, problems);
-    for (std::size_t index = 0; index < rows.size(); ++index) {
-        const std::size_t row = index + 1;
-        auto text = load_text::trimmed(rows[index]);
+    load_text::RowCursor rows(file_text);
+    while (auto physical = rows.next()) {
+        const std::size_t row = rows.number();
+        auto text = load_text::trimmed(*physical);
         if (text.empty()) continue;
         if (auto why = load_text::row_problem(text); !why.empty()) {
             builder.problem(row, std::nullopt, why);
@@ -36,11 +37,14 @@ void read_text_rows(const std::vector<std::string_view>& rows, Source& source, l
                 builder.ignored_after_end(row);
                 continue;
             }
-            SourceLine line;
-            line.kind = SourceLine::Kind::Statement;
-            line.row = row;
-            line.statement = std::string(load_text::trimmed(text.substr(2)));
-            builder.add(std::move(line));
+            // ";;" alone is an empty statement: a list has no row for one.
+            if (auto statement = load_text::trimmed(text.substr(2)); !statement.empty()) {
+                SourceLine line;
+                line.kind = SourceLine::Kind::Statement;
+                line.row = row;
+                line.statement = std::string(statement);
+                builder.add(std::move(line));
+            }
             continue;
         }
         auto tokens = load_text::split_operands(text.substr(0, load_text::comment_start(text)));
@@ -55,28 +59,36 @@ void read_text_rows(const std::vector<std::string_view>& rows, Source& source, l
         }
         auto token = tokens->begin();
         std::optional<std::uint32_t> step;
-        if (all_digits(*token)) {
+        // A leading number is the step; false when the line is refused.
+        auto take_step = [&] {
+            step.reset();
+            if (!all_digits(*token)) return true;
             step = load_text::parse_step(*token);
             if (!step) {
                 builder.problem(row, std::nullopt, "step number " + load_text::quoted_excerpt(*token) + " is too large");
-                continue;
+                return false;
             }
             if (++token == tokens->end()) {
                 builder.problem(row, step, "a step number with no instruction after it");
-                continue;
+                return false;
             }
-        }
-        // "P10" alone is a label; "P10: LD X0" a label and an instruction.
-        if (load_text::is_pointer_label(*token) && (token + 1 == tokens->end() || token->ends_with(':'))) {
+            return true;
+        };
+        if (!take_step()) continue;
+        // "P10" alone is a label; "P10: LD X0" a label and an instruction
+        // (which may have its own step number, as on a line of its own).
+        bool line_done = false;
+        while (!line_done && load_text::is_pointer_label(*token) &&
+               (token + 1 == tokens->end() || token->ends_with(':'))) {
             SourceLine label;
             label.kind = SourceLine::Kind::Pointer;
             label.row = row;
             label.step = step;
             label.mnemonic = without_colon(*token);
             builder.add(std::move(label));
-            if (++token == tokens->end()) continue;
-            step.reset();
+            line_done = ++token == tokens->end() || !take_step();
         }
+        if (line_done) continue;
         SourceLine line;
         line.row = row;
         line.step = step;

@@ -27,6 +27,8 @@ bool one_step(std::string_view mnemonic) {
                        [&](const char* m) { return load_text::same_mnemonic(mnemonic, m); });
 }
 
+constexpr const char* text_form_title = "slmp-sim program, text form: one instruction a line";
+
 std::string quoted(std::string_view field) {
     std::string out = "\"";
     for (char c : field) {
@@ -110,7 +112,9 @@ std::string write_csv(const Source& source) {
 }
 
 std::string write_text(const Source& source) {
-    std::string text;
+    // read_source takes a file whose third line is 7 comma- or TAB-separated
+    // fields for a CSV list; a fixed third line keeps any program text.
+    std::string text = "; " + source.name + "\n; PLC Information: " + source.plc_info + "\n; " + text_form_title + "\n";
     for (const auto& line : source.lines) {
         if (line.kind == SourceLine::Kind::Statement) {
             text += ";; " + line.statement;

@@ -5,7 +5,7 @@
 # build-asan (clang, ASan + UBSan, SLMP_FUZZ=ON) first if needed. Prints the
 # executions and whether anything was found; on a crash exits non-zero and
 # prints the sanitizer report, the reproducer's path and a hexdump of it.
-# Targets: fuzz_engine fuzz_fields fuzz_frame_prefix fuzz_config fuzz_scenario fuzz_http fuzz_frontends
+# Targets: fuzz_engine fuzz_fields fuzz_frame_prefix fuzz_config fuzz_scenario fuzz_http fuzz_frontends fuzz_program
 # Re-run a reproducer: build-asan/tests/fuzz/TARGET path/to/crash-...
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -26,7 +26,7 @@ export ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:check_initialization_o
 (cd build-asan && ctest --output-on-failure -j"$(nproc)" -R '^(unit|integration):' -LE '^(browser|interop)$')
 
 status=0
-for target in fuzz_engine fuzz_fields fuzz_frame_prefix fuzz_config fuzz_scenario fuzz_http; do
+for target in fuzz_engine fuzz_fields fuzz_frame_prefix fuzz_config fuzz_scenario fuzz_http fuzz_program; do
   scripts/fuzz.sh "$target" "$fuzz_seconds" || status=1
 done
 exit $status

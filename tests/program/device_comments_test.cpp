@@ -53,3 +53,9 @@ TEST_CASE("hostile comment files are refused with the row and the problem") {
           Lines{"b.csv: is not valid UTF-16LE: an unpaired surrogate at byte offset 2"});
     CHECK(read_comments("", "empty.csv").empty());
 }
+
+TEST_CASE("characters beyond the BMP (UTF-16 surrogate pairs) and long comments are kept as written") {
+    auto file = utf16le_file("\"Title\"\r\n\"Device Name\"\t\"Comment\"\r\n\"M10\"\t\"Alarm 🚨 \u30a2\u30e9\u30fc\u30e0\"\r\n"
+                             "\"D100\"\t\"" + std::string(100, 'x') + "\"\t\"\"\r\n");
+    CHECK(flat(read_comments(file, "c.csv")) == Lines{"M10=Alarm 🚨 アラーム", "D100=" + std::string(100, 'x')});
+}

@@ -126,7 +126,7 @@ TEST_CASE("hostile statements and operands: control characters, megabyte rows, u
 
 TEST_CASE("a damaged UTF-16 list is still read as a list and says what is wrong") {
     CHECK(read_problems(utf16le_file("LD X0\r\nOUT Y0\r\nEND\r\n"), "t.csv") ==
-          Lines{"t.csv: row 3: has 1 fields; the column-name row of a GX Works list has 7"});
+          Lines{"t.csv: row 3: has 1 field; the column-name row of a GX Works list has 7"});
 }
 
 TEST_CASE("LoadError's message is every problem, one a line") {

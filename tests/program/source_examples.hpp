@@ -1,6 +1,7 @@
 // The worked examples of docs/program.md (the specification's §8): each
 // program in the text form and as the CSV data rows that follow the three
-// header rows. Generated from the specification's text; do not edit by hand.
+// header rows, copied verbatim from the specification's section 8 (data rows
+// TAB-separated as printed there); a change there is a change here.
 #pragma once
 
 #include <array>

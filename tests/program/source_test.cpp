@@ -74,11 +74,13 @@ TEST_CASE("the text form: * is a mnemonic, ;; a statement, P10 and P10: labels, 
         "P10\n"
         "P11:\n"
         "P12: LD X1\n"
+        "P13: P14: 7 LD X2\n"
         "\tOUT\tT0\tK20\r\n"
         "END\n",
         "t.il");
     CHECK(summary(source) == Lines{";; Motor 1 start", "ld x0", "* K300 K400 D4", "$MOV \"A B;C//D\" D0",
-                                   "$MOV \"say \"\"hi\"\"\" D10", "P10:", "P11:", "P12:", "LD X1", "OUT T0 K20", "END"});
+                                   "$MOV \"say \"\"hi\"\"\" D10", "P10:", "P11:", "P12:", "LD X1", "P13:", "P14:", "LD X2", "OUT T0 K20", "END"});
+    CHECK(source.lines[11].step == 7u);
     CHECK(source.lines[0].kind == SourceLine::Kind::Statement);
     CHECK(source.lines[5].kind == SourceLine::Kind::Pointer);
     CHECK(source.lines[6].mnemonic == "P11");
@@ -211,4 +213,16 @@ TEST_CASE("an empty file is an empty text program") {
     auto s = read_source("", "empty.il");
     CHECK(s.format == Format::Text);
     CHECK(s.lines.empty());
+}
+
+TEST_CASE("spreadsheet leftovers: empty trailing fields in rows 1 and 2, short data rows, blank rows") {
+    auto s = read_source(
+        "MAIN,,,,,,\r\nPLC Information:,QCPU (Q mode) Q03UDV,,,,,\r\nStep No.,Line Statement,Instruction,I/O(Device),Blank,PI Statement,Note\r\n"
+        "0,,LD,X0\r\n\r\n,,,,,,\r\n1,,OUT,T0\r\n,,,K20\r\n5,,END\r\n",
+        "sheet.csv");
+    CHECK(s.name == "MAIN");
+    CHECK(s.plc_info == "QCPU (Q mode) Q03UDV");
+    CHECK(summary(s) == Lines{"LD X0", "OUT T0 K20", "END"});
+    CHECK(s.lines[1].row == 7);
+    CHECK(s.warnings.empty());
 }

@@ -108,8 +108,18 @@ TEST_CASE("write_text: one line each, ;; for statements, steps where the source 
                                             "\"5\"\t\"\"\t\"P10\"\t\"\"\t\"\"\t\"\"\t\"\"\n"
                                             "\"6\"\t\"\"\t\"END\"\t\"\"\t\"\"\t\"\"\t\"\"\n"),
                            "a.csv");
-    CHECK(write_text(csv) == ";; Timer\n0 LD X0\n1 OUT T0 K20  ; coil\n5 P10\n6 END\n");
-    CHECK(write_text(read_source("LD X0\nOUT T0 K20\nEND\n", "a.il")) == "LD X0\nOUT T0 K20\nEND\n");
+    const std::string title = "; slmp-sim program, text form: one instruction a line\n";
+    CHECK(write_text(csv) == "; MAIN\n; PLC Information: RCPU R08\n" + title +
+                                 ";; Timer\n0 LD X0\n1 OUT T0 K20  ; coil\n5 P10\n6 END\n");
+    CHECK(write_text(read_source("LD X0\nOUT T0 K20\nEND\n", "a.il")) ==
+          "; MAIN\n; PLC Information: \n" + title + "LD X0\nOUT T0 K20\nEND\n");
+}
+
+TEST_CASE("write_text's output stays text even when a line holds 7 comma-separated fields") {
+    auto source = read_source("; 1\n; 2\n; 3\nLD a,b,c,d,e,f,g\nEND\n", "a.il");
+    auto again = read_source(write_text(source), "a.il");
+    CHECK(again.format == Format::Text);
+    CHECK(summary(again) == Lines{"LD a,b,c,d,e,f,g", "END"});
 }
 
 TEST_CASE("round trips: text -> CSV -> lines and CSV -> text -> lines give the same lines for every worked example") {
