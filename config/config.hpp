@@ -19,6 +19,7 @@
 #include "protocol/peer.hpp"
 #include "protocol/port_profile.hpp"
 #include "config/timing_config.hpp"
+#include "program/program.hpp"
 
 namespace slmp::config {
 
@@ -123,8 +124,16 @@ struct HttpConfig {
 
 // The running CPU ("cpu" key; docs/cpu-runtime.md). The key lists name each
 // timer/counter/latch entry's JSON pointer for messages at validation time.
+// The user's PLC program ("cpu": {"program": ...}, --program; docs/program.md).
+struct ProgramConfig {
+    std::string file;        // empty: the CPU runs no program
+    std::string comments;    // device comments (optional)
+    program::ProgramOptions options;
+};
+
 struct CpuRuntimeConfig {
     devicemodel::RuntimeConfig runtime;
+    ProgramConfig program;
     std::vector<std::string> timer_keys, counter_keys, latch_keys;
 };
 

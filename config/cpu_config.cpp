@@ -128,9 +128,54 @@ void lockout(const JsonAt& at, devicemodel::RuntimeConfig& runtime) {
     if (at.has("seconds")) runtime.lockout_period = std::chrono::seconds(at["seconds"].unsigned_int(86400));
 }
 
+// "program": {"file": ..., "operation_error": "stop", "wdt_ms": 200, ...}; the
+// keys and their ranges are docs/program.md's "Configuration" table.
+void program_object(const JsonAt& at, ProgramConfig& program) {
+    at.only_keys({"file", "comments", "operation_error", "wdt_ms", "timer_limit", "output_mode_at_run",
+                  "max_steps_per_scan", "allow_double_timer_coils"});
+    auto& o = program.options;
+    program.file = at["file"].string();
+    if (program.file.empty()) at["file"].fail("is empty", "name the program file (GX Works CSV list or text)");
+    if (at.has("comments")) program.comments = at["comments"].string();
+    if (at.has("operation_error")) {
+        auto mode = at["operation_error"].string();
+        if (mode != "stop" && mode != "continue") at["operation_error"].fail("unknown mode '" + mode + "'", "use \"stop\" or \"continue\"");
+        o.operation_error = mode == "stop" ? program::OnOperationError::Stop : program::OnOperationError::Continue;
+    }
+    if (at.has("wdt_ms")) {
+        auto ms = at["wdt_ms"].unsigned_int(2000);
+        if (ms < 10 || ms % 10 != 0) at["wdt_ms"].fail("out of range", "use 10 to 2000 in steps of 10 (default 200)");
+        o.wdt_ms = static_cast<std::uint32_t>(ms);
+    }
+    if (at.has("timer_limit")) {
+        auto limit = at["timer_limit"];
+        limit.only_keys({"low_ms", "high_ms"});
+        if (limit.has("low_ms")) {
+            o.timer_low_ms = static_cast<std::uint32_t>(limit["low_ms"].unsigned_int(1000));
+            if (o.timer_low_ms == 0) limit["low_ms"].fail("must be at least 1", "use 1 to 1000 (default 100)");
+        }
+        if (limit.has("high_ms")) {
+            o.timer_high_ms = static_cast<std::uint32_t>(limit["high_ms"].unsigned_int(100));
+            if (o.timer_high_ms == 0) limit["high_ms"].fail("must be at least 1", "use 1 to 100 (default 10)");
+        }
+    }
+    if (at.has("output_mode_at_run")) {
+        auto mode = at["output_mode_at_run"].string();
+        if (mode != "previous" && mode != "recalculate")
+            at["output_mode_at_run"].fail("unknown mode '" + mode + "'", "use \"previous\" or \"recalculate\"");
+        o.output_mode_at_run = mode == "previous" ? program::OutputModeAtRun::Previous : program::OutputModeAtRun::Recalculate;
+    }
+    if (at.has("max_steps_per_scan")) {
+        o.max_steps_per_scan = at["max_steps_per_scan"].unsigned_int(1'000'000'000);
+        if (o.max_steps_per_scan < 1000) at["max_steps_per_scan"].fail("too small", "use 1000 to 1000000000 (default 10000000)");
+    }
+    if (at.has("allow_double_timer_coils")) o.allow_double_timer_coils = at["allow_double_timer_coils"].boolean();
+}
+
 void cpu_object(const JsonAt& at, CpuRuntimeConfig& cpu) {
     at.only_keys({"switch", "scan_time_ms", "remote_reset", "output_off_at_stop", "password", "password_lockout",
-                  "latch", "timers", "counters", "error", "system_protect"});
+                  "latch", "timers", "counters", "error", "system_protect", "program"});
+    if (at.has("program")) program_object(at["program"], cpu.program);
     auto& r = cpu.runtime;
     if (at.has("switch")) r.run_switch = parse_run_switch(at["switch"].string(), at.pointer() + "/switch");
     if (at.has("scan_time_ms")) {

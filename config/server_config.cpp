@@ -191,6 +191,8 @@ ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path
     parse_hardware(root, c);
     parse_drives(root, c);
     parse_cpu_runtime(root, c);
+    for (auto* file : {&c.cpu.program.file, &c.cpu.program.comments})   // relative to the configuration file
+        if (!file->empty() && std::filesystem::path(*file).is_relative()) *file = (directory / *file).string();
     parse_labels(root, directory, c.labels);
     return c;
 }

@@ -50,6 +50,7 @@ void add_connection_endpoints(Router& router, Api& api);   // /api/connections[/
 void add_info_endpoint(Router& router, Api& api);          // /api/info
 void add_ondemand_endpoint(Router& router, Api& api);      // /api/ondemand
 void add_state_endpoints(Router& router, Api& api);        // /api/state
+void add_program_endpoints(Router& router, Api& api);      // /api/program[/source|/reload]
 void add_event_endpoint(Router& router, Api& api);         // /api/events
 void add_metrics_endpoint(Router& router, Api& api);       // /metrics
 void add_static_pages(Router& router);

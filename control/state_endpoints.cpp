@@ -31,6 +31,7 @@ std::string_view cause_name(StopCause cause) {
     switch (cause) {
         case StopCause::Switch: return "switch";
         case StopCause::Remote: return "remote";
+        case StopCause::Instruction: return "program";
         case StopCause::Error: return "error";
     }
     return "?";

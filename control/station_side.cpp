@@ -25,6 +25,7 @@ StationSide::StationSide(const ServedStation& served, std::uint16_t http_port)
     add_info_endpoint(router, api);
     add_ondemand_endpoint(router, api);
     add_state_endpoints(router, api);
+    add_program_endpoints(router, api);
     add_event_endpoint(router, api);
     add_metrics_endpoint(router, api);
 }

@@ -13,6 +13,7 @@ RunState OperatingState::state() const {
 StopCause OperatingState::cause() const {
     if (error_ && error_->stop) return StopCause::Error;
     if (switch_ == RunSwitch::Stop) return StopCause::Switch;
+    if (hold_.kind == Hold::Kind::Stop && hold_.owner == kProgramStop) return StopCause::Instruction;
     return hold_.kind == Hold::Kind::None ? StopCause::Switch : StopCause::Remote;
 }
 

@@ -21,7 +21,8 @@ namespace slmp::devicemodel {
 // SD203 low nibble (hardware-behaviour.md §6).
 enum class RunState : std::uint8_t { Run = 0, Stop = 2, Pause = 3 };
 // SD203 bits 4-7: why the CPU is in STOP/PAUSE (iQ-R/Q "STOP/PAUSE cause").
-enum class StopCause : std::uint8_t { Switch = 0, Remote = 2, Error = 4 };
+// Instruction: the program's STOP instruction (3, inferred; docs/program.md).
+enum class StopCause : std::uint8_t { Switch = 0, Remote = 2, Instruction = 3, Error = 4 };
 enum class RunSwitch : std::uint8_t { Run, Stop };
 
 // Who a remote operation comes from: one TCP connection, or one UDP endpoint.
@@ -70,6 +71,10 @@ public:
     RemoteRefusal clear_error();
 
     void raise(CpuError error) { error_ = error; }
+    // The program's STOP instruction: a STOP hold that no client owns, so a
+    // remote RUN from any client (or a switch cycle) starts the CPU again.
+    static constexpr ClientId kProgramStop = ~ClientId{0};
+    void stop_by_program() { hold_ = {Hold::Kind::Stop, kProgramStop}; }
     // Power cycle or Remote RESET: the remote hold and the error are erased.
     void restart() {
         hold_ = {};
@@ -77,7 +82,9 @@ public:
     }
 
 private:
-    bool held_by_other(ClientId client) const { return hold_.kind != Hold::Kind::None && hold_.owner != client; }
+    bool held_by_other(ClientId client) const {
+        return hold_.kind != Hold::Kind::None && hold_.owner != client && hold_.owner != kProgramStop;
+    }
 
     RunSwitch switch_;
     Hold hold_;

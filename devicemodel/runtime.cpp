@@ -20,11 +20,12 @@ void Runtime::power_on(DeviceMemory& memory) {
     state_.restart();
     if (config_.error) state_.raise(*config_.error);
     timers_.reset_tracking();
+    if (observer_) observer_->powered_on();
     clock_started_ = false;   // SD412 and the clock pulses count from the next scan
     scan_min_.reset();
     scan_max_.reset();
     special::publish_constants(memory);
-    special::publish_scan_times(memory, {}, {}, {});
+    special::publish_scan_times(memory, family_, {});
     first_scan_ = state_.state() == RunState::Run;
     special::publish_first_scan(memory, first_scan_);
     special::publish_state(memory, state_.state(), state_.cause());
@@ -44,6 +45,8 @@ void Runtime::scan(DeviceMemory& memory, TimePoint now, const CalendarTime& cale
     special::publish_second_counter(memory, since);
     special::publish_calendar(memory, calendar, family_);
     if (state_.state() != RunState::Run) return;   // STOP/PAUSE: nothing times
+    // SD420, the scan counter: +1 each scan in RUN, wrapping as a 16-bit word.
+    special::set_sd(memory, 420, (special::sd(memory, 420) + 1) & 0xFFFF);
 
     timers_.run(memory, elapsed);
     if (first_scan_) {
@@ -54,9 +57,10 @@ void Runtime::scan(DeviceMemory& memory, TimePoint now, const CalendarTime& cale
         return;
     }
     scan_current_ = elapsed;
+    if (!scan_min_) scan_initial_ = elapsed;
     scan_min_ = scan_min_ ? std::min(*scan_min_, elapsed) : elapsed;
     scan_max_ = scan_max_ ? std::max(*scan_max_, elapsed) : elapsed;
-    special::publish_scan_times(memory, elapsed, *scan_min_, *scan_max_);
+    special::publish_scan_times(memory, family_, {elapsed, scan_initial_, *scan_min_, *scan_max_});
 }
 
 template <typename Change>
@@ -73,6 +77,7 @@ void Runtime::settle(DeviceMemory& memory, RunState before) {
     special::publish_state(memory, after, state_.cause());
     special::publish_error(memory, state_.error());
     if (after == before) return;
+    if (observer_) observer_->state_changing(memory, before, after);
     timers_.reset_tracking();   // time spent outside RUN does not count
     if (after == RunState::Stop && config_.output_off_at_stop) {
         const auto* y = find_by_symbol("Y");
@@ -89,6 +94,7 @@ void Runtime::settle(DeviceMemory& memory, RunState before) {
 void Runtime::clear(DeviceMemory& memory, ClearScope scope) {
     clear_devices(memory, latch_, scope);
     timers_.reset_tracking();
+    if (observer_) observer_->devices_cleared();
     if (initial_values_) initial_values_(memory);
 }
 
@@ -140,6 +146,13 @@ RemoteRefusal Runtime::clear_error(DeviceMemory& memory) {
 void Runtime::set_switch(DeviceMemory& memory, RunSwitch position) {
     change(memory, [&] {
         state_.set_switch(position);
+        return RemoteRefusal::None;
+    });
+}
+
+void Runtime::stop_by_program(DeviceMemory& memory) {
+    change(memory, [&] {
+        state_.stop_by_program();
         return RemoteRefusal::None;
     });
 }

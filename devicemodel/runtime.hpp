@@ -28,6 +28,22 @@ namespace slmp::devicemodel {
 // Remote RUN clear modes (§5.2): 00 none, 01 outside the latch range, 02 all.
 enum class ClearMode : std::uint8_t { None = 0, NonLatched = 1, All = 2 };
 
+// Told what the operating state does, for the user's program running on this
+// CPU (station/cpu_program.hpp): it keeps the Y image of STOP->RUN and restarts
+// its edges and timers. Calls come on the station's strand.
+class RuntimeObserver {
+public:
+    // The state is changing from `before` to `after`; Y are still as they were.
+    virtual void state_changing(DeviceMemory& memory, RunState before, RunState after) = 0;
+    // Devices were cleared (Remote RUN clear modes, latch clear, a power cycle).
+    virtual void devices_cleared() = 0;
+    // Power-on and Remote RESET: the CPU starts afresh (from the switch).
+    virtual void powered_on() = 0;
+
+protected:
+    ~RuntimeObserver() = default;
+};
+
 class Runtime {
 public:
     using TimePoint = std::chrono::steady_clock::time_point;
@@ -40,6 +56,7 @@ public:
     // Re-applied after every device clear and restart, as the CPU's "device
     // initial values" parameter is (§5.2).
     void set_initial_values(std::function<void(DeviceMemory&)> apply) { initial_values_ = std::move(apply); }
+    void set_observer(RuntimeObserver* observer) { observer_ = observer; }
 
     // One scan at time `now` (steady) with the wall-clock calendar.
     void scan(DeviceMemory& memory, TimePoint now, const CalendarTime& calendar);
@@ -69,6 +86,8 @@ public:
     RemoteRefusal clear_error(DeviceMemory& memory);
     void set_switch(DeviceMemory& memory, RunSwitch position);
     void raise_error(DeviceMemory& memory, CpuError error);
+    // The program executed STOP: the CPU stops at the end of this scan.
+    void stop_by_program(DeviceMemory& memory);
 
     // A power cycle (also the end of a Remote RESET): clears what a power cycle
     // clears and starts from the switch.
@@ -88,13 +107,14 @@ private:
     TimerBank timers_;
     RemotePassword password_;
     std::function<void(DeviceMemory&)> initial_values_;
+    RuntimeObserver* observer_ = nullptr;
 
     bool clock_started_ = false;
     TimePoint power_on_{};
     TimePoint last_scan_{};
     bool first_scan_ = false;
     std::optional<std::chrono::microseconds> scan_min_, scan_max_;
-    std::chrono::microseconds scan_current_{};
+    std::chrono::microseconds scan_current_{}, scan_initial_{};
 };
 
 }  // namespace slmp::devicemodel

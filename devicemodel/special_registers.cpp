@@ -1,5 +1,7 @@
 #include "devicemodel/special_registers.hpp"
 
+#include <array>
+
 namespace slmp::devicemodel::special {
 namespace {
 
@@ -79,10 +81,12 @@ void publish_second_counter(DeviceMemory& memory, std::chrono::microseconds sinc
     set_sd(memory, 412, static_cast<std::uint32_t>(since.count() / 1'000'000));
 }
 
-void publish_scan_times(DeviceMemory& memory, std::chrono::microseconds current, std::chrono::microseconds min,
-                        std::chrono::microseconds max) {
-    const std::chrono::microseconds values[] = {current, min, max};
-    for (std::uint32_t i = 0; i < 3; ++i) {
+void publish_scan_times(DeviceMemory& memory, Family family, const ScanTimeValues& times) {
+    const bool q_layout = family == Family::QnU || family == Family::L || family == Family::QJ71E71;
+    const std::array<std::chrono::microseconds, 4> values =
+        q_layout ? std::array{times.current, times.initial, times.min, times.max}
+                 : std::array{times.current, times.min, times.max, std::chrono::microseconds{}};
+    for (std::uint32_t i = 0; i < (q_layout ? 4u : 3u); ++i) {
         auto us = values[i].count();
         set_sd(memory, 520 + 2 * i, static_cast<std::uint32_t>(us / 1000));
         set_sd(memory, 521 + 2 * i, static_cast<std::uint32_t>(us % 1000));

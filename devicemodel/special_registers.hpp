@@ -50,8 +50,13 @@ void publish_first_scan(DeviceMemory& memory, bool first_scan);
 void publish_clock_pulses(DeviceMemory& memory, std::chrono::microseconds since_power_on);
 void publish_calendar(DeviceMemory& memory, const CalendarTime& time, Family family);
 void publish_second_counter(DeviceMemory& memory, std::chrono::microseconds since_power_on);
-void publish_scan_times(DeviceMemory& memory, std::chrono::microseconds current, std::chrono::microseconds min,
-                        std::chrono::microseconds max);
+// SD520/521 the current scan; then the family's layout (docs/cpu-runtime.md):
+// iQ-R and iQ-F minimum SD522/523, maximum SD524/525; Q and L the initial
+// scan SD522/523, minimum SD524/525, maximum SD526/527.
+struct ScanTimeValues {
+    std::chrono::microseconds current{}, initial{}, min{}, max{};
+};
+void publish_scan_times(DeviceMemory& memory, Family family, const ScanTimeValues& times);
 
 }  // namespace special
 }  // namespace slmp::devicemodel

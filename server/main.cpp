@@ -4,6 +4,7 @@
 #include <malloc.h>
 
 #include <iostream>
+#include <sstream>
 
 #include <spdlog/spdlog.h>
 
@@ -42,11 +43,10 @@ int main(int argc, char** argv) {
         slmp::server::Server server(cl.plant);
         server.run();
         return 0;
-    } catch (const slmp::config::ConfigError& e) {
-        std::cerr << "slmp-sim: error: " << e.what() << "\n";
-        return 2;
     } catch (const std::exception& e) {
-        std::cerr << "slmp-sim: error: " << e.what() << "\n";
+        // One line per problem (a program that does not load lists them all).
+        std::istringstream lines(e.what());
+        for (std::string line; std::getline(lines, line);) std::cerr << "slmp-sim: error: " << line << "\n";
         return 2;
     }
 }

@@ -25,7 +25,7 @@ constexpr const char* kVersion = "slmp-sim 0.1.0";
 // Options that name one station's ports, files or identity: refused with a plant.
 constexpr const char* kOneStationOptions[] = {"profile", "bind", "tcp-port", "udp-port", "drive", "labels", "snapshot",
                                               "record", "record-pcap", "hostlink-port", "serial", "network-no",
-                                              "station-no"};
+                                              "station-no", "program"};
 
 void replace_ports(config::ServerConfig& c, Transport transport, const std::vector<unsigned>& ports,
                    const char* option) {
@@ -114,6 +114,7 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
             c.labels.structures.insert(c.labels.structures.end(), more.structures.begin(), more.structures.end());
             c.labels.labels.insert(c.labels.labels.end(), more.labels.begin(), more.labels.end());
         }
+    if (vm.count("program")) c.cpu.program.file = vm["program"].as<std::string>();
     if (vm.count("record")) c.record_file = vm["record"].as<std::string>();
     if (vm.count("record-pcap")) c.record_pcap_file = vm["record-pcap"].as<std::string>();
     if (vm.count("clock-speed")) {
@@ -186,6 +187,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("drive", po::value<std::vector<std::string>>(), "N=DIR: serve file drive N from the folder DIR; repeatable (docs/files.md)")
         ("scenario", po::value<std::vector<std::string>>(), "run a scenario file (values that move, logic, faults, replay); repeatable (docs/scenarios.md)")
         ("labels", po::value<std::vector<std::string>>(), "declare global labels from this JSON or GX Works3 CSV file; repeatable (docs/labels.md)")
+        ("program", po::value<std::string>(), "run this PLC program (GX Works2/3 CSV list or text instruction list) scan by scan (docs/program.md)")
         ("record", po::value<std::string>(), "record every request and response to this JSON-lines file (docs/scenarios.md)")
         ("clock-speed", po::value<double>(), "run the CPU's clock (scan, timers, scenarios) this many times faster than real time (default 1)")
         ("timing", po::value<std::string>(), "when answers leave: instant (default), end_of_scan or model (docs/timing.md)")

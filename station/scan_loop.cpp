@@ -4,6 +4,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "station/cpu_program.hpp"
 #include "station/log_exception.hpp"
 
 namespace slmp::station {
@@ -95,7 +96,9 @@ VirtualClock::TimePoint ScanLoop::end_time(std::uint64_t number) const {
 void ScanLoop::scan_once() {
     const auto now = clock_.now();
     auto calendar = local_calendar(clock_.calendar());
+    if (program_) program_->execute();
     for (auto* cpu : cpus_) cpu->runtime().scan(cpu->memory(), now, calendar);
+    if (program_) program_->end_of_scan(std::chrono::duration_cast<std::chrono::microseconds>(now - last_end_));
     ++scans_;
     last_end_ = now;
     ends_[scans_ % kEndsKept] = now;

@@ -19,6 +19,8 @@
 
 namespace slmp::station {
 
+class CpuProgram;
+
 // The host's local time as the CPU's calendar (SD210-SD216).
 devicemodel::CalendarTime local_calendar(std::chrono::system_clock::time_point now);
 
@@ -33,6 +35,9 @@ public:
     void stop();
     // Called after every scan with the scan's time (the scenarios' clock).
     void after_scan(std::function<void(std::chrono::steady_clock::time_point)> callback) { after_scan_ = std::move(callback); }
+    // CPU No.1's program: executed in every scan before END processing, its
+    // timers given the scan's time after it (null: none; docs/program.md).
+    void run_program(CpuProgram* program) { program_ = program; }
 
     const VirtualClock& clock() const { return clock_; }
     std::chrono::milliseconds period() const { return period_; }
@@ -84,6 +89,7 @@ private:
     // destroyed after the loop (at shutdown).
     std::shared_ptr<Waiters> waiters_ = std::make_shared<Waiters>();
     std::function<void(std::chrono::steady_clock::time_point)> after_scan_;
+    CpuProgram* program_ = nullptr;
 };
 
 }  // namespace slmp::station

@@ -7,6 +7,7 @@
 #include "protocol/lock_owner.hpp"
 #include "station/log_outcome.hpp"
 #include "protocol/error_response.hpp"
+#include "station/cpu_program.hpp"
 #include "station/drive_state.hpp"
 #include "station/persistence.hpp"
 #include "station/response_timing.hpp"
@@ -60,6 +61,8 @@ void Station::start_cpu_runtime(const station::Home& home) {
     cpu_.runtime().set_initial_values([this](devicemodel::DeviceMemory&) { config::apply_initial_values(cpu_, config_.devices); });
     scan_ = std::make_unique<ScanLoop>(home, all_cpus(), cpu_.runtime().config().scan_time, config_.clock_speed,
                                        config_.clock_frozen);
+    program_ = std::make_unique<CpuProgram>(cpu_, config_.cpu.program, *log_);
+    scan_->run_program(program_.get());
     if (!config_.persistence.state_dir.empty()) {
         persistence_ = std::make_unique<Persistence>(home, cpu_, config_.persistence, *log_);
         persistence_->restore();

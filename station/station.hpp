@@ -30,6 +30,7 @@ namespace slmp::jw51cm { class ComputerLink; }
 
 namespace slmp::station {
 
+class CpuProgram;
 class DriveState;
 class Persistence;
 class ResponseTiming;
@@ -145,6 +146,8 @@ public:
     config::TimingMode timing_mode() const { return timing_mode_; }
     const config::TimingModel& timing_model() const { return timing_model_; }
 
+    // CPU No.1's PLC program (station/cpu_program.hpp); null in a bare station.
+    CpuProgram* program() { return program_.get(); }
     devicemodel::Cpu& cpu() { return cpu_; }
     const devicemodel::Cpu& cpu() const { return cpu_; }
     // The front ends serving this station's memory (frontends/), registered by
@@ -189,6 +192,7 @@ private:
     Activity activity_;
     FrontEnds frontends_;
     ScenarioHook scenario_;
+    std::unique_ptr<CpuProgram> program_;                // null in a bare station
     std::unique_ptr<ScanLoop> scan_;                     // null in a bare station
     std::unique_ptr<Persistence> persistence_;           // null without a state directory
     std::unique_ptr<DriveState> drive_state_;            // null without a state directory

@@ -17,7 +17,11 @@ function showStationPage(isPlant) {
     $('#station-name').textContent = station.name;
   }
   startStation()
-    .then(startTrend)   // device names need the device table startStation() reads
+    .then(() => {
+      // Both need the device table startStation() reads (device names, the watches the program fills).
+      startProgram().catch((e) => showMessage(`program: ${e.message}`));
+      return startTrend();
+    })
     .catch((e) => showMessage(`cannot start the monitor: ${e.message}`));
   startLabels().catch((e) => showMessage(`labels: ${e.message}`));
   startFiles().catch((e) => showMessage(`files: ${e.message}`));

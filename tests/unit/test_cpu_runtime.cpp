@@ -223,6 +223,10 @@ TEST_CASE("special relays and registers", "[runtime][special]") {
         CHECK(rig.get("SD524") == 12);
         CHECK(rig.get("SD525") == 345);
     }
+    SECTION("SD420 counts the scans in RUN") {
+        rig.scans(3, 10ms);
+        CHECK(rig.get("SD420") == 3);
+    }
     SECTION("SD210-SD216 calendar, binary on iQ-R") {
         rig.scan();
         CHECK(rig.get("SD210") == 2024);
@@ -325,4 +329,20 @@ TEST_CASE("remote password lock-out with a fake clock", "[runtime][password]") {
     CHECK(pw.check(bytes("secret1"), t + 59s) == RemotePassword::Check::LockedOut);
     CHECK(pw.check(bytes("SECRET1"), t + 60s) == RemotePassword::Check::Mismatch);   // case-sensitive
     CHECK(pw.check(bytes("secret1"), t + 60s) == RemotePassword::Check::Match);
+}
+
+TEST_CASE("Q/L scan-time registers: SD522/523 initial, SD524/525 minimum, SD526/527 maximum", "[runtime]") {
+    Rig rig({}, "Q26UDEHCPU");
+    rig.scan(10ms);   // first scan: not measured
+    rig.scan(12'345us);
+    rig.scan(9'500us);
+    rig.scan(11ms);
+    CHECK(rig.get("SD520") == 11);
+    CHECK(rig.get("SD521") == 0);
+    CHECK(rig.get("SD522") == 12);
+    CHECK(rig.get("SD523") == 345);
+    CHECK(rig.get("SD524") == 9);
+    CHECK(rig.get("SD525") == 500);
+    CHECK(rig.get("SD526") == 12);
+    CHECK(rig.get("SD527") == 345);
 }

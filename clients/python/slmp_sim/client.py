@@ -1,5 +1,6 @@
 """A small client for slmp-sim's HTTP API (docs/api.md), standard library only."""
 import json
+import os
 import urllib.error
 import urllib.parse
 import urllib.request
@@ -83,6 +84,48 @@ class Scenarios:
         return self._sim.request("DELETE", "/api/scenarios/" + urllib.parse.quote(name, safe=""))
 
 
+class Program:
+    """The CPU's PLC program (``/api/program``, docs/program.md). Loading and
+    unloading need the CPU in STOP, as GX Works' *Write to PLC* does: ``load``
+    stops the CPU, writes the program and puts the switch back to RUN unless
+    ``run=False``."""
+
+    def __init__(self, sim):
+        self._sim = sim
+
+    def get(self):
+        return self._sim.request("GET", "/api/program")
+
+    def load(self, path=None, text=None, name=None, run=True):
+        """``load(path="line1.csv")`` (a GX Works CSV list or a text list, read here) or ``load(text="LD X0\nOUT Y0\nEND")``."""
+        if (path is None) == (text is None):
+            raise ValueError("load(path=...) or load(text=...), one of them")
+        if path is not None:
+            with open(path, "rb") as f:
+                data = f.read()
+            name = name or os.path.basename(str(path))
+        else:
+            data = text.encode("utf-8")
+            name = name or "program.il"
+        self._sim.set_switch("STOP")
+        result = self._sim.request_bytes("PUT", "/api/program" + self._sim._query(file=name), data)
+        if run:
+            self._sim.set_switch("RUN")
+        return result
+
+    def unload(self, run=True):
+        self._sim.set_switch("STOP")
+        result = self._sim.request("DELETE", "/api/program")
+        if run:
+            self._sim.set_switch("RUN")
+        return result
+
+    def source(self, format="text"):
+        """The program written back: ``"text"`` (str) or ``"csv"`` (GX Works' UTF-16 bytes)."""
+        raw = self._sim.request("GET", "/api/program/source" + self._sim._query(format=format))
+        return raw.decode("utf-8") if format == "text" else raw
+
+
 class SlmpSim:
     """The HTTP API of one simulator. ``tcp_port``/``udp_port`` are its SLMP ports, for the client under test."""
 
@@ -95,13 +138,17 @@ class SlmpSim:
         self.clock = Clock(self)
         self.fault = Faults(self)
         self.scenario = Scenarios(self)
+        self.program = Program(self)
 
     # -- plumbing ---------------------------------------------------------
     def request(self, method, path, body=None, timeout=None):
         data = None if body is None else json.dumps(body).encode()
+        return self.request_bytes(method, path, data, timeout, "application/json")
+
+    def request_bytes(self, method, path, data, timeout=None, content_type="application/octet-stream"):
         req = urllib.request.Request("http://%s:%d%s" % (self.host, self.http_port, path), data=data, method=method)
         if data is not None:
-            req.add_header("Content-Type", "application/json")
+            req.add_header("Content-Type", content_type)
         try:
             with urllib.request.urlopen(req, timeout=timeout or self.timeout) as response:
                 raw = response.read()

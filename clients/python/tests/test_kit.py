@@ -130,3 +130,41 @@ def test_command_line(slmp_sim):
     refused = cli("restore", "nope")
     assert refused.returncode == 1
     assert "no snapshot 'nope'" in refused.stderr
+
+
+# The HMI-style test of docs/ci.md: the CPU runs the line's program; the HMI
+# presses a start button (M0) over SLMP; 3 s of scans later the motor output
+# is on and the cycle counter counted once.
+CONVEYOR_PROGRAM = """
+;; start button M0 latches the motor request M10, stop button M1 drops it
+LD M0
+OR M10
+ANI M1
+OUT M10
+;; the motor starts 3 s after the request (T0, 100 ms base)
+LD M10
+OUT T0 K30
+LD T0
+OUT Y20
+;; every motor start counts once
+LD Y20
+OUT C0 K9999
+END
+"""
+
+
+def test_program_reacts_to_an_hmi_button(slmp_sim_factory):
+    sim = slmp_sim_factory(args=["--clock", "frozen"])
+    info = sim.program.load(text=CONVEYOR_PROGRAM, name="conveyor.il")
+    assert info["state"] == "loaded" and info["file"] == "conveyor.il"
+    assert write_words(sim.tcp_port, "M", 0, [0b01]) == 0      # press start (M0 ON)
+    sim.clock.step(scans=1)
+    assert write_words(sim.tcp_port, "M", 0, [0b00]) == 0      # release it
+    sim.clock.step(ms=2900)
+    assert sim.get("Y20") == 0
+    sim.clock.step(ms=200)
+    assert sim.get("Y20") == 1
+    assert sim.get("CN0") == 1
+    assert "OUT T0 K30" in sim.program.source("text")
+    sim.program.unload()
+    assert sim.program.get()["state"] == "none"
