@@ -54,9 +54,9 @@ TEST_CASE("zero page arena: untouched pages are zero and not reported", "[device
         CHECK_FALSE(copy == fresh);
     }
     SECTION("a range asked for is clipped to it") {
-        auto part = fresh.touched(4000, 6000);
+        auto part = fresh.touched(4500, 6000);
         REQUIRE(part.size() == 1);
-        CHECK(part[0].begin == 4000);
+        CHECK(part[0].begin == 4500);
         CHECK(part[0].end == 6000);
         CHECK(fresh.touched(100000, 200000).empty());
     }
