@@ -1,5 +1,7 @@
 #include "devicemodel/device_clear.hpp"
 
+#include <algorithm>
+
 namespace slmp::devicemodel {
 
 bool LatchMap::latched(Area area, std::uint32_t number) const {
@@ -28,12 +30,15 @@ void clear_devices(DeviceMemory& memory, const LatchMap& latch, ClearScope scope
     for (std::size_t i = 0; i < static_cast<std::size_t>(Area::Count); ++i) {
         auto area = static_cast<Area>(i);
         if (!clearable(area)) continue;
-        auto parts = stored_parts(area);
         auto size = memory.size(area);
-        for (std::uint32_t n = 0; n < size; ++n) {
-            if (scope == ClearScope::NonLatched && latch.latched(area, n)) continue;
-            for (const auto* part : parts) memory.set_value(*part, n, 0);
-        }
+        // Only where a value may be non-zero: an idle CPU's clear (Remote
+        // RESET, a RUN with clear mode) reads none of its untouched pages.
+        for (const auto* part : stored_parts(area))
+            for (const auto& range : memory.possibly_nonzero(*part))
+                for (auto n = range.first; n < std::min(range.end, size); ++n) {
+                    if (scope == ClearScope::NonLatched && latch.latched(area, n)) continue;
+                    memory.set_value(*part, n, 0);
+                }
     }
 }
 

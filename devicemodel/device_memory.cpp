@@ -1,6 +1,7 @@
 #include "devicemodel/device_memory.hpp"
 
 #include <algorithm>
+#include <type_traits>
 #include <utility>
 
 namespace slmp::devicemodel {
@@ -17,23 +18,105 @@ bool is_bit_area(Area area) { return area <= Area::SM; }
 
 DeviceMemory::DeviceMemory(const DeviceSizes& sizes, std::uint32_t slack_words)
     : sizes_(sizes), stores_(static_cast<std::size_t>(Area::Count)) {
+    // Two passes over the same layout: the first adds up the bytes, the second
+    // (once the arena exists) hands each store its slice. Slices start on a
+    // cache line; every store's pages are zero until written.
+    struct Points {
+        std::uint32_t bits = 0, coils = 0, values = 0;
+    };
+    std::vector<Points> points(stores_.size());
     for (std::size_t i = 0; i < stores_.size(); ++i) {
         auto area = static_cast<Area>(i);
-        auto points = sizes[i];
-        auto& s = stores_[i];
+        auto n = sizes[i];
         if (area == Area::R) continue;  // lives in ZR
-        if (area == Area::ZR) points = std::max(points, sizes[static_cast<std::size_t>(Area::R)]) + slack_words;
-        // resize, not assign: calloc's pages are zero already (ZeroPages).
-        if (is_bit_area(area)) {
-            s.bits.resize(points);
-        } else if (is_timer_or_counter(area)) {
-            s.bits.resize(points);
-            s.coils.resize(points);
-            s.values.resize(points);
-        } else {
-            s.values.resize(points);
-        }
+        if (area == Area::ZR) n = std::max(n, sizes[static_cast<std::size_t>(Area::R)]) + slack_words;
+        if (is_bit_area(area)) points[i] = {n, 0, 0};
+        else if (is_timer_or_counter(area)) points[i] = {n, n, n};
+        else points[i] = {0, 0, n};
     }
+    auto lay_out = [&](auto&& place) {
+        std::size_t offset = 0;
+        auto slice = [&](std::uint32_t n, std::size_t element) {
+            const auto at = offset;
+            if (n > 0) offset = (offset + std::size_t{n} * element + 63) / 64 * 64;
+            return at;
+        };
+        for (std::size_t i = 0; i < stores_.size(); ++i) {
+            const auto bits = slice(points[i].bits, 1);
+            const auto coils = slice(points[i].coils, 1);
+            const auto values = slice(points[i].values, sizeof(std::uint32_t));
+            place(i, bits, coils, values);
+        }
+        return offset;
+    };
+    arena_ = ZeroPageArena(lay_out([](auto...) {}));
+    lay_out([&](std::size_t i, std::size_t bits, std::size_t coils, std::size_t values) {
+        auto* base = arena_.data();
+        auto& s = stores_[i];
+        if (points[i].bits) s.bits = {reinterpret_cast<std::uint8_t*>(base + bits), points[i].bits};
+        if (points[i].coils) s.coils = {reinterpret_cast<std::uint8_t*>(base + coils), points[i].coils};
+        if (points[i].values) s.values = {reinterpret_cast<std::uint32_t*>(base + values), points[i].values};
+    });
+}
+
+namespace {
+
+// The same slice of another arena (a copy's).
+template <class T>
+std::span<T> rebased(std::span<T> plane, const std::byte* from, std::byte* to) {
+    if (plane.empty()) return {};
+    const auto offset = reinterpret_cast<const std::byte*>(plane.data()) - from;
+    return {reinterpret_cast<T*>(to + offset), plane.size()};
+}
+
+}  // namespace
+
+DeviceMemory::DeviceMemory(const DeviceMemory& other)
+    : sizes_(other.sizes_), arena_(other.arena_), stores_(other.stores_), label_area_(other.label_area_),
+      observer_(other.observer_) {
+    for (auto& s : stores_) {
+        s.bits = rebased(s.bits, other.arena_.data(), arena_.data());
+        s.coils = rebased(s.coils, other.arena_.data(), arena_.data());
+        s.values = rebased(s.values, other.arena_.data(), arena_.data());
+    }
+}
+
+DeviceMemory& DeviceMemory::operator=(const DeviceMemory& other) {
+    if (this != &other) *this = DeviceMemory(other);
+    return *this;
+}
+
+bool DeviceMemory::operator==(const DeviceMemory& other) const {
+    if (sizes_ != other.sizes_ || label_area_ != other.label_area_ || stores_.size() != other.stores_.size())
+        return false;
+    // The same sizes but another slack would lay the arena out differently.
+    for (std::size_t i = 0; i < stores_.size(); ++i) {
+        const auto& a = stores_[i];
+        const auto& b = other.stores_[i];
+        if (a.bits.size() != b.bits.size() || a.coils.size() != b.coils.size() || a.values.size() != b.values.size())
+            return false;
+    }
+    return arena_ == other.arena_;
+}
+
+std::vector<DeviceRange> DeviceMemory::possibly_nonzero(const DeviceSpec& spec) const {
+    const auto& s = store(spec.area);
+    const auto* base = arena_.data();
+    auto devices = [&](const auto& plane) {
+        std::vector<DeviceRange> out;
+        if (plane.empty()) return out;
+        using T = typename std::remove_reference_t<decltype(plane)>::value_type;
+        const auto begin = static_cast<std::size_t>(reinterpret_cast<const std::byte*>(plane.data()) - base);
+        for (const auto& r : arena_.touched(begin, begin + plane.size_bytes())) {
+            const auto first = static_cast<std::uint32_t>((r.begin - begin) / sizeof(T));
+            const auto end = static_cast<std::uint32_t>((r.end - begin + sizeof(T) - 1) / sizeof(T));
+            if (!out.empty() && out.back().end >= first) out.back().end = std::max(out.back().end, end);
+            else out.push_back({first, end});
+        }
+        return out;
+    };
+    if (spec.unit == Unit::Bit) return devices(spec.part == Part::Coil ? s.coils : s.bits);
+    return devices(s.values);
 }
 
 DeviceMemory::Store& DeviceMemory::store(Area area) { return stores_[static_cast<std::size_t>(storage_area(area))]; }
@@ -56,45 +139,49 @@ void DeviceMemory::set_bit(const DeviceSpec& spec, std::uint32_t number, bool on
     auto& plane = spec.part == Part::Coil ? s.coils : s.bits;
     if (number >= plane.size()) return;
     std::uint8_t now = on ? 1 : 0;
-    if (observer_ && plane[number] != now) observer_->written(spec, number, 1);
+    // Not written when unchanged: a clear of an untouched page must not dirty it.
+    if (plane[number] == now) return;
+    if (observer_) observer_->written(spec, number, 1);
     plane[number] = now;
 }
 
-void DeviceMemory::read_part(const DeviceSpec& spec, std::span<std::uint32_t> out) const {
+void DeviceMemory::read_part(const DeviceSpec& spec, std::uint32_t first, std::span<std::uint32_t> out) const {
     const auto& s = store(spec.area);
     if (spec.unit == Unit::Bit) {
         const auto& plane = spec.part == Part::Coil ? s.coils : s.bits;
-        const auto n = std::min(out.size(), plane.size());
-        for (std::size_t i = 0; i < n; ++i) out[i] = plane[i] != 0 ? 1 : 0;
+        const auto n = first < plane.size() ? std::min(out.size(), plane.size() - first) : 0;
+        for (std::size_t i = 0; i < n; ++i) out[i] = plane[first + i] != 0 ? 1 : 0;
         std::fill(out.begin() + static_cast<std::ptrdiff_t>(n), out.end(), 0);
         return;
     }
-    const auto n = std::min(out.size(), s.values.size());
+    const auto n = first < s.values.size() ? std::min(out.size(), s.values.size() - first) : 0;
     const std::uint32_t mask = spec.unit == Unit::Word ? 0xFFFF : 0xFFFFFFFF;
-    for (std::size_t i = 0; i < n; ++i) out[i] = s.values[i] & mask;
+    for (std::size_t i = 0; i < n; ++i) out[i] = s.values[first + i] & mask;
     std::fill(out.begin() + static_cast<std::ptrdiff_t>(n), out.end(), 0);
 }
 
-void DeviceMemory::write_part(const DeviceSpec& spec, std::span<const std::uint32_t> in) {
+void DeviceMemory::write_part(const DeviceSpec& spec, std::uint32_t first, std::span<const std::uint32_t> in) {
     auto& s = store(spec.area);
     if (spec.unit == Unit::Bit) {
         auto& plane = spec.part == Part::Coil ? s.coils : s.bits;
-        const auto n = std::min(in.size(), plane.size());
+        const auto n = first < plane.size() ? std::min(in.size(), plane.size() - first) : 0;
         for (std::size_t i = 0; i < n; ++i) {
             const std::uint8_t now = in[i] != 0 ? 1 : 0;
-            if (plane[i] == now) continue;
-            if (observer_) observer_->written(spec, static_cast<std::uint32_t>(i), 1);
-            plane[i] = now;
+            const auto number = first + i;
+            if (plane[number] == now) continue;
+            if (observer_) observer_->written(spec, static_cast<std::uint32_t>(number), 1);
+            plane[number] = now;
         }
         return;
     }
-    const auto n = std::min(in.size(), s.values.size());
+    const auto n = first < s.values.size() ? std::min(in.size(), s.values.size() - first) : 0;
     const std::uint32_t mask = spec.unit == Unit::Word ? 0xFFFF : 0xFFFFFFFF;
     for (std::size_t i = 0; i < n; ++i) {
         const auto now = in[i] & mask;
-        if (s.values[i] == now) continue;
-        if (observer_) observer_->written(spec, static_cast<std::uint32_t>(i), 1);
-        s.values[i] = now;
+        const auto number = first + i;
+        if (s.values[number] == now) continue;
+        if (observer_) observer_->written(spec, static_cast<std::uint32_t>(number), 1);
+        s.values[number] = now;
     }
 }
 
@@ -110,7 +197,8 @@ void DeviceMemory::set_value(const DeviceSpec& spec, std::uint32_t number, std::
     auto& values = store(spec.area).values;
     if (number >= values.size()) return;
     auto now = spec.unit == Unit::Word ? value & 0xFFFF : value;
-    if (observer_ && values[number] != now) observer_->written(spec, number, 1);
+    if (values[number] == now) return;   // as set_bit: an unchanged page stays clean
+    if (observer_) observer_->written(spec, number, 1);
     values[number] = now;
 }
 

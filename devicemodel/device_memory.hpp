@@ -4,14 +4,12 @@
 #pragma once
 
 #include <cstdint>
-#include <cstdlib>
-#include <new>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include "devicemodel/cpu_profile.hpp"
 #include "devicemodel/device_table.hpp"
+#include "devicemodel/zero_page_arena.hpp"
 
 namespace slmp::devicemodel {
 
@@ -29,12 +27,24 @@ protected:
     ~WriteObserver() = default;
 };
 
+// Devices [first, end) of one part.
+struct DeviceRange {
+    std::uint32_t first = 0;
+    std::uint32_t end = 0;
+};
+
 class DeviceMemory {
 public:
     // `slack_words` extra words are kept behind R/ZR so that iQ-R's start-only
     // range check can read and write past the configured end without touching
     // another area (hardware-behaviour.md §6: ZR163839 ×64 succeeds).
     explicit DeviceMemory(const DeviceSizes& sizes, std::uint32_t slack_words = 1024);
+    // A copy holds the same values and costs RAM only for the pages that hold
+    // something (zero_page_arena.hpp); the observer pointer is copied too.
+    DeviceMemory(const DeviceMemory& other);
+    DeviceMemory& operator=(const DeviceMemory& other);
+    DeviceMemory(DeviceMemory&&) noexcept = default;
+    DeviceMemory& operator=(DeviceMemory&&) noexcept = default;
 
     // Number of devices configured for an area (R counts its own size though it
     // shares ZR's storage).
@@ -59,8 +69,19 @@ public:
     // Bulk forms of value()/set_value() over devices [0, n) of one part (bits,
     // coils, contacts, values), for snapshots: an R08CPU restores in a few ms
     // instead of a million calls. write_part tells the observer of each change.
-    void read_part(const DeviceSpec& spec, std::span<std::uint32_t> out) const;
-    void write_part(const DeviceSpec& spec, std::span<const std::uint32_t> values);
+    void read_part(const DeviceSpec& spec, std::span<std::uint32_t> out) const { read_part(spec, 0, out); }
+    void write_part(const DeviceSpec& spec, std::span<const std::uint32_t> values) { write_part(spec, 0, values); }
+    // The same from device `first` on (devices past the store read 0, writes there are dropped).
+    void read_part(const DeviceSpec& spec, std::uint32_t first, std::span<std::uint32_t> out) const;
+    void write_part(const DeviceSpec& spec, std::uint32_t first, std::span<const std::uint32_t> values);
+
+    // The devices of one part (bits, coils, contacts, values) that may hold a
+    // non-zero value, ascending and disjoint; every other device reads 0.
+    // Known from which pages of the store were ever touched, without reading
+    // them (zero_page_arena.hpp), so snapshots, restores and clears of an idle
+    // CPU neither read nor dirty its memory. Covers the whole store (for ZR
+    // the slack behind it too).
+    std::vector<DeviceRange> possibly_nonzero(const DeviceSpec& spec) const;
 
     // Whether devices [start, start + count) exist (count in devices, not words).
     bool contains(Area area, std::uint64_t start, std::uint64_t count) const;
@@ -97,48 +118,25 @@ public:
     // Same sizes and every stored value the same; the observer is not compared.
     // A copy and this make a cheap before/after snapshot (fuzz_http checks that
     // a refused request wrote nothing).
-    bool operator==(const DeviceMemory& other) const {
-        return sizes_ == other.sizes_ && stores_ == other.stores_ && label_area_ == other.label_area_;
-    }
+    // Compares only the pages touched in either (zero_page_arena.hpp).
+    bool operator==(const DeviceMemory& other) const;
 
 private:
     // Device memory only costs RAM where it is used (docs/plants.md, "Memory"):
-    // stores come from calloc, whose large blocks are fresh zero pages the
-    // kernel maps on first write, and resize() default-initialises (writes
-    // nothing) instead of writing zeros over every page.
-    template <class T>
-    struct ZeroPages {
-        using value_type = T;
-        ZeroPages() = default;
-        template <class U>
-        ZeroPages(const ZeroPages<U>&) {}
-        T* allocate(std::size_t n) {
-            if (auto* p = static_cast<T*>(std::calloc(n, sizeof(T)))) return p;
-            throw std::bad_alloc();
-        }
-        void deallocate(T* p, std::size_t) { std::free(p); }
-        template <class U>
-        void construct(U* p) { ::new (static_cast<void*>(p)) U; }
-        template <class U, class... Args>
-        void construct(U* p, Args&&... args) { ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...); }
-        template <class U>
-        bool operator==(const ZeroPages<U>&) const { return true; }
-    };
-    template <class T>
-    using Pages = std::vector<T, ZeroPages<T>>;
-
+    // every store is a slice of one ZeroPageArena, whose pages stay the
+    // kernel's zero page until written, whatever the heap's state.
     struct Store {
-        Pages<std::uint8_t> bits;      // plain bit areas; contacts of T/C areas
-        Pages<std::uint8_t> coils;     // T/C areas only
-        Pages<std::uint32_t> values;   // word areas (low 16 bits), LZ, T/C current values
-        bool operator==(const Store&) const = default;
+        std::span<std::uint8_t> bits;      // plain bit areas; contacts of T/C areas
+        std::span<std::uint8_t> coils;     // T/C areas only
+        std::span<std::uint32_t> values;   // word areas (low 16 bits), LZ, T/C current values
     };
     Store& store(Area area);
     const Store& store(Area area) const;
     static Area storage_area(Area area) { return area == Area::R ? Area::ZR : area; }
 
     DeviceSizes sizes_;
-    std::vector<Store> stores_;
+    ZeroPageArena arena_;
+    std::vector<Store> stores_;   // slices of arena_
     std::vector<std::uint16_t> label_area_;
     WriteObserver* observer_ = nullptr;
 };

@@ -5,6 +5,8 @@ Starts build/server/slmp-sim with a plant of N stations of one profile (TCP on
 any free port each, 127.0.0.1), then reports:
   start_s           from exec to the ready file (every station listening)
   rss_idle_mib      the process's RSS once ready, and per station
+  private_dirty_idle_mib  its private dirty memory then (/proc/PID/smaps_rollup):
+                    what the plant really costs, without the binary's shared pages
   cpu_idle_percent  CPU the idle plant uses over 3 s (the scans)
   rss_written_mib   RSS after K stations had every word of D, W, R, ZR and every
                     bit of M, B written non-zero over HTTP, and the growth per such station
@@ -19,6 +21,16 @@ def rss_kib(pid):
         for line in f:
             if line.startswith("VmRSS:"):
                 return int(line.split()[1])
+    return 0
+
+def private_dirty_kib(pid):
+    try:
+        with open(f"/proc/{pid}/smaps_rollup") as f:
+            for line in f:
+                if line.startswith("Private_Dirty:"):
+                    return int(line.split()[1])
+    except OSError:
+        pass
     return 0
 
 def cpu_ticks(pid):
@@ -63,6 +75,7 @@ def main():
             with open(ready) as f:
                 http = json.load(f)["http"]
             rss_idle = rss_kib(proc.pid)
+            dirty_idle = private_dirty_kib(proc.pid)
             ticks = cpu_ticks(proc.pid)
             time.sleep(3)
             cpu_idle = (cpu_ticks(proc.pid) - ticks) / os.sysconf("SC_CLK_TCK") / 3 * 100
@@ -84,6 +97,8 @@ def main():
         "stations": args.stations, "profile": args.profile, "start_s": round(start_s, 2),
         "rss_idle_mib": round(rss_idle / 1024, 1),
         "rss_idle_kib_per_station": round(rss_idle / args.stations, 1),
+        "private_dirty_idle_mib": round(dirty_idle / 1024, 1),
+        "private_dirty_idle_kib_per_station": round(dirty_idle / args.stations, 1),
         "cpu_idle_percent": round(cpu_idle, 1),
         "written_stations": args.written,
         "rss_written_mib": round(rss_written / 1024, 1),

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "config/config.hpp"
+#include "devicemodel/byte_reader.hpp"
 #include "frontends/hostlink/host_link.hpp"
 #include "frontends/jw51cm/computer_link.hpp"
 
@@ -109,33 +110,20 @@ UnitParts decode_units(std::span<const std::uint8_t> bytes, const std::string& s
     auto fail = [&](const std::string& why) {
         return config::ConfigError(source + ": " + why + "; move the file away to start the front ends afresh");
     };
-    std::size_t pos = 0;
-    auto need = [&](std::size_t n) {
-        if (bytes.size() - pos < n) throw fail("truncated front-end state");
+    devicemodel::ByteReader r(bytes);
+    auto need = [&](auto value) {
+        if (!value) throw fail("truncated front-end state");
+        return *value;
     };
-    auto u32 = [&] {
-        need(4);
-        std::uint32_t v = 0;
-        for (int i = 0; i < 4; ++i) v |= std::uint32_t{bytes[pos + static_cast<std::size_t>(i)]} << (8 * i);
-        pos += 4;
-        return v;
-    };
-    need(sizeof kMagic);
-    if (std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) throw fail("not a slmp-sim front-end state file (bad magic)");
-    pos += sizeof kMagic;
+    auto magic = need(r.bytes(sizeof kMagic));
+    if (std::memcmp(magic.data(), kMagic, sizeof kMagic) != 0) throw fail("not a slmp-sim front-end state file (bad magic)");
     UnitParts parts;
-    for (auto count = u32(); count > 0; --count) {
-        need(1);
-        std::size_t n = bytes[pos++];
-        need(n);
-        std::string name(bytes.begin() + static_cast<std::ptrdiff_t>(pos), bytes.begin() + static_cast<std::ptrdiff_t>(pos + n));
-        pos += n;
-        auto size = u32();
-        need(size);
-        parts[name].assign(bytes.begin() + static_cast<std::ptrdiff_t>(pos), bytes.begin() + static_cast<std::ptrdiff_t>(pos + size));
-        pos += size;
+    for (auto count = need(r.u32()); count > 0; --count) {
+        auto name = need(r.name());
+        auto part = need(r.bytes(need(r.u32())));
+        parts[name].assign(part.begin(), part.end());
     }
-    if (pos != bytes.size()) throw fail("unexpected bytes after the last part");
+    if (!r.done()) throw fail("unexpected bytes after the last part");
     return parts;
 }
 

@@ -11,6 +11,7 @@
 #include <spdlog/spdlog.h>
 
 #include "config/config.hpp"
+#include "devicemodel/byte_reader.hpp"
 #include "devicemodel/snapshot.hpp"
 #include "station/persistence.hpp"
 #include "station/scan_loop.hpp"
@@ -112,34 +113,20 @@ StationSnapshot decode_station_file(std::span<const std::uint8_t> bytes, const s
     auto fail = [&](const std::string& why) -> config::ConfigError {
         return config::ConfigError(source + ": " + why + "; give a file saved by GET /api/snapshots/{name}/file");
     };
-    std::size_t pos = 0;
-    auto need = [&](std::size_t n) {
-        if (bytes.size() - pos < n) throw fail("truncated station snapshot");
+    devicemodel::ByteReader r(bytes);
+    auto need = [&](auto value) {
+        if (!value) throw fail("truncated station snapshot");
+        return *value;
     };
-    auto u32 = [&] {
-        need(4);
-        std::uint32_t v = 0;
-        for (int i = 0; i < 4; ++i) v |= std::uint32_t{bytes[pos + static_cast<std::size_t>(i)]} << (8 * i);
-        pos += 4;
-        return v;
-    };
-    need(sizeof kFileMagic);
-    if (std::memcmp(bytes.data(), kFileMagic, sizeof kFileMagic) != 0) throw fail("not a slmp-sim station snapshot (bad magic)");
-    pos += sizeof kFileMagic;
+    auto magic = need(r.bytes(sizeof kFileMagic));
+    if (std::memcmp(magic.data(), kFileMagic, sizeof kFileMagic) != 0) throw fail("not a slmp-sim station snapshot (bad magic)");
     StationSnapshot snapshot;
     snapshot.has_scenarios = false;
-    auto count = u32();
+    auto count = need(r.u32());
     for (std::uint32_t i = 0; i < count; ++i) {
-        need(1);
-        std::size_t n = bytes[pos++];
-        need(n);
-        std::string name(bytes.begin() + static_cast<std::ptrdiff_t>(pos), bytes.begin() + static_cast<std::ptrdiff_t>(pos + n));
-        pos += n;
-        auto size = u32();
-        need(size);
-        std::vector<std::uint8_t> blob(bytes.begin() + static_cast<std::ptrdiff_t>(pos),
-                                       bytes.begin() + static_cast<std::ptrdiff_t>(pos + size));
-        pos += size;
+        auto name = need(r.name());
+        auto bytes_of_blob = need(r.bytes(need(r.u32())));
+        std::vector<std::uint8_t> blob(bytes_of_blob.begin(), bytes_of_blob.end());
         if (name.rfind("unit ", 0) == 0) {
             snapshot.units[name.substr(5)] = std::move(blob);
             continue;
@@ -165,7 +152,7 @@ StationSnapshot decode_station_file(std::span<const std::uint8_t> bytes, const s
         else if (rest == "station buffer") c.station_buffer = std::move(blob);
         else spdlog::warn("snapshot: {}: unknown part '{}' skipped", source, name);
     }
-    if (pos != bytes.size()) throw fail("unexpected bytes after the last part");
+    if (!r.done()) throw fail("unexpected bytes after the last part");
     if (snapshot.cpus.empty() || snapshot.cpus[0].memory.empty()) throw fail("no device memory of CPU No.1 in it");
     return snapshot;
 }
