@@ -26,7 +26,6 @@
 
 #include "devicemodel/cpu.hpp"
 #include "devicemodel/device_table.hpp"
-#include "program/program.hpp"
 
 namespace slmp::scenarios {
 
@@ -74,6 +73,7 @@ public:
     // Compiles `logic` (labels already bound) for `cpu`; throws
     // config::ConfigError naming `source`, the rung's pointer and the problem.
     LogicRunner(const LogicProgram& logic, const std::string& source, const devicemodel::Cpu& cpu);
+    ~LogicRunner();
     // One scan in RUN, `elapsed` being the scan's time. Returns a message for
     // an operation error or watchdog the rungs met that differs from the last
     // one reported (the rungs go on: operation errors continue, SM0/SD0 tell).
@@ -81,9 +81,12 @@ public:
     void stopped();
 
 private:
+    // The engine's state (program::Execution), kept out of this header so
+    // that scenario code does not see namespace slmp::program.
+    struct Engine;
+    std::unique_ptr<Engine> engine_;   // null: no rungs
     std::string source_;
     std::vector<std::string> pointers_;   // by rung: the JSON pointer of each source row
-    std::optional<program::Execution> execution_;
     bool restart_ = true;
     std::string last_problem_;
 };

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "config/config.hpp"
+#include "program/program.hpp"
 #include "scenarios/load_parts.hpp"
 #include "scenarios/logic.hpp"
 

@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "config/config.hpp"
+#include "program/program.hpp"
 #include "scenarios/logic.hpp"
 
 namespace slmp::scenarios {
@@ -21,6 +22,12 @@ program::ProgramOptions rung_options() {
 }
 
 }  // namespace
+
+struct LogicRunner::Engine {
+    program::Execution execution;
+};
+
+LogicRunner::~LogicRunner() = default;
 
 LogicRunner::LogicRunner(const LogicProgram& logic, const std::string& source, const devicemodel::Cpu& cpu)
     : source_(source) {
@@ -43,7 +50,7 @@ LogicRunner::LogicRunner(const LogicProgram& logic, const std::string& source, c
     rungs.lines.push_back(end);
 
     try {
-        execution_.emplace(program::compile(rungs, cpu.profile(), rung_options(), cpu.labels()));
+        engine_ = std::make_unique<Engine>(Engine{program::Execution(program::compile(rungs, cpu.profile(), rung_options(), cpu.labels()))});
     } catch (const program::LoadError& e) {
         // The first problem, as "<scenario file>: /logic/<n>: <problem>".
         const std::string prefix = std::string(kSourceName) + ": line ";
@@ -63,13 +70,14 @@ LogicRunner::LogicRunner(const LogicProgram& logic, const std::string& source, c
 }
 
 std::optional<std::string> LogicRunner::scan(devicemodel::DeviceMemory& memory, std::chrono::microseconds elapsed) {
-    if (!execution_) return std::nullopt;
+    if (!engine_) return std::nullopt;
+    auto& execution = engine_->execution;
     if (restart_) {   // the first scan in RUN: edges and accumulators start afresh
-        execution_->restart();
+        execution.restart();
         restart_ = false;
     }
-    const auto outcome = execution_->scan(memory);
-    execution_->end_of_scan(elapsed);
+    const auto outcome = execution.scan(memory);
+    execution.end_of_scan(elapsed);
     if (!outcome.error) {
         last_problem_.clear();
         return std::nullopt;
