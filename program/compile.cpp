@@ -29,10 +29,12 @@ constexpr int kMaxOpenBlocks = 62;
 constexpr int kMaxBranches = 16;             // MPS depth (spec §5.1, inferred)
 
 struct Compiler {
-    Compiler(const Source& s, const devicemodel::CpuProfile& p, const ProgramOptions& o) : source(s), profile(p), options(o) {}
+    Compiler(const Source& s, const devicemodel::CpuProfile& p, const ProgramOptions& o, const devicemodel::LabelTable* l)
+        : source(s), profile(p), options(o), global_labels(l) {}
     const Source& source;
     const devicemodel::CpuProfile& profile;
     const ProgramOptions& options;
+    const devicemodel::LabelTable* global_labels;   // operands that are no device may name these
     std::shared_ptr<Program> program = std::make_shared<Program>();
     std::vector<std::string> problems;
     std::vector<std::string> warnings;
@@ -103,6 +105,7 @@ struct Compiler {
         std::string error;
         auto parsed = parse_operand(text, profile.numbering, error);
         if (!parsed) {
+            if (auto ref = label_of(text)) return label_operand(line, mnemonic, text, type, *ref);
             problem(line, error);
             return std::nullopt;
         }
@@ -256,6 +259,81 @@ struct Compiler {
         }
         if (!in_range(line, shown, area, o.number, span)) return std::nullopt;
         return o;
+    }
+
+    // ---- global labels (names as written: labels keep their case) ----
+
+    std::optional<devicemodel::LabelRef> label_of(const std::string& text) const {
+        if (!global_labels) return std::nullopt;
+        devicemodel::LabelFault fault{};
+        return global_labels->resolve(text, {}, fault, /*external_only=*/false);
+    }
+
+    // A label element as operand type `type`: the device it is laid out on,
+    // or its words/bit in the label area (OperandKind::LabelWord/LabelBit).
+    std::optional<Operand> label_operand(const SourceLine& line, std::string_view mnemonic, const std::string& text, char type,
+                                         const devicemodel::LabelRef& ref) {
+        using devicemodel::BasicType;
+        const std::string m(mnemonic);
+        const auto basic = ref.basic;
+        const bool bit = type == 'b' || type == 'o';
+        const bool word16 = type == 'w' || type == 'W' || type == 'n';
+        const bool word32 = type == 'd' || type == 'D';
+        const bool real = type == 'e' || type == 'E';
+        const bool writes = type == 'o' || type == 'W' || type == 'D' || type == 'E';
+        bool fits = false;
+        if (bit) fits = basic == BasicType::Bit && m != "SFT" && m != "SFTP";   // SFT walks neighbouring devices
+        if (word16) fits = basic == BasicType::Word || basic == BasicType::UWord;
+        if (word32) fits = basic == BasicType::DWord || basic == BasicType::UDWord || basic == BasicType::Time;
+        if (real) fits = basic == BasicType::Real;
+        devicemodel::LabelType shown_type{};
+        shown_type.basic = basic;
+        shown_type.chars = ref.chars;
+        if (!fits) {
+            problem(line, "label '" + text + "' is of type " + devicemodel::format_label_type(shown_type) + "; '" + m +
+                              "' needs " + (bit ? "a Bit label" : word16 ? "a Word [Signed] or Word [Unsigned] label"
+                                                                  : word32 ? "a Double Word or Time label"
+                                                                  : real   ? "a FLOAT [Single Precision] label"
+                                                                           : "a device") + " here");
+            return std::nullopt;
+        }
+        if (writes && ref.timer_member) {
+            problem(line, "'" + m + "' cannot write " + text + " (timers and counters change through OUT and RST)");
+            return std::nullopt;
+        }
+        const auto& cell = ref.first;
+        const auto at = static_cast<std::uint32_t>(cell.at);
+        Operand o;
+        o.plane = Plane::Values;
+        if (cell.spec) o.area = cell.spec->area;
+        switch (cell.kind) {
+            case devicemodel::LabelCell::Kind::Words:
+                o.kind = !cell.spec ? OperandKind::LabelWord
+                                    : (cell.spec->unit == Unit::DoubleWord ? OperandKind::Wide : OperandKind::Word);
+                o.number = at;
+                break;
+            case devicemodel::LabelCell::Kind::BitInWord:
+                o.kind = cell.spec ? OperandKind::BitOfWord : OperandKind::LabelBit;
+                o.number = cell.spec ? at / 16 : at;
+                o.bit = static_cast<std::uint8_t>(cell.spec ? at % 16 : 0);
+                break;
+            case devicemodel::LabelCell::Kind::Bit:
+                o.kind = OperandKind::Bit;
+                o.plane = cell.spec->part == Part::Coil ? Plane::Coils : Plane::Bits;
+                o.number = at;
+                break;
+            case devicemodel::LabelCell::Kind::Value:
+                o.kind = cell.spec->unit == Unit::DoubleWord ? OperandKind::Wide : OperandKind::Word;
+                o.number = at;
+                break;
+        }
+        return o;
+    }
+
+    // RST of a Word label clears it, as RST D0 does.
+    bool names_word_label(const std::string& text) const {
+        auto ref = label_of(text);
+        return ref && (ref->basic == devicemodel::BasicType::Word || ref->basic == devicemodel::BasicType::UWord);
     }
 
     // ---- rung structure ----
@@ -428,8 +506,10 @@ struct Compiler {
                                                (first->spec == nullptr || first->spec->part != Part::Contact);
         if ((mnemonic == "OUT" && first_is_timer_or_counter) || mnemonic == "OUTH" || mnemonic == "OUTHS") {
             if (!timer_or_counter_coil(line, mnemonic, *info, shown, first, step)) return;
-        } else if (mnemonic == "RST" && operands.size() == 1 && first && first->kind == ParsedOperand::Kind::Device &&
-                   (first_is_timer_or_counter || (first->spec && first->spec->unit != Unit::Bit && first->bit < 0))) {
+        } else if (mnemonic == "RST" && operands.size() == 1 &&
+                   ((first && first->kind == ParsedOperand::Kind::Device &&
+                     (first_is_timer_or_counter || (first->spec && first->spec->unit != Unit::Bit && first->bit < 0))) ||
+                    (!first && names_word_label(operands[0])))) {
             if (!rung(line, info->role, step, shown)) return;
             if (first_is_timer_or_counter) {
                 auto o = resolve(line, mnemonic, operands[0], 'z');
@@ -578,7 +658,7 @@ struct Compiler {
     }
 
     void double_bit_coil(const SourceLine& line, const Operand& o, const std::string& name) {
-        if (o.index != kNoIndex) return;
+        if (o.index != kNoIndex || o.kind == OperandKind::LabelBit) return;
         const auto key = std::tuple{static_cast<int>(o.area), static_cast<int>(o.plane), o.number,
                                     o.kind == OperandKind::BitOfWord ? static_cast<int>(o.bit) : -1};
         auto [seen, added] = bit_coils.emplace(key, line.row);
@@ -688,12 +768,26 @@ struct Compiler {
 
 }  // namespace
 
-std::shared_ptr<const Program> compile(const Source& source, const devicemodel::CpuProfile& profile,
-                                       const ProgramOptions& options, std::vector<std::string>* warnings) {
-    Compiler compiler(source, profile, options);
+namespace {
+std::shared_ptr<const Program> compile_with(const Source& source, const devicemodel::CpuProfile& profile,
+                                            const ProgramOptions& options, const devicemodel::LabelTable* labels,
+                                            std::vector<std::string>* warnings) {
+    Compiler compiler(source, profile, options, labels);
     auto program = compiler.run();
     if (warnings) warnings->insert(warnings->end(), compiler.warnings.begin(), compiler.warnings.end());
     return program;
+}
+}  // namespace
+
+std::shared_ptr<const Program> compile(const Source& source, const devicemodel::CpuProfile& profile,
+                                       const ProgramOptions& options, std::vector<std::string>* warnings) {
+    return compile_with(source, profile, options, nullptr, warnings);
+}
+
+std::shared_ptr<const Program> compile(const Source& source, const devicemodel::CpuProfile& profile,
+                                       const ProgramOptions& options, const devicemodel::LabelTable& labels,
+                                       std::vector<std::string>* warnings) {
+    return compile_with(source, profile, options, &labels, warnings);
 }
 
 const Source& source_of(const Program& program) { return program.source; }

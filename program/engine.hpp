@@ -56,6 +56,10 @@ enum class OperandKind : std::uint8_t {
     String,     // "text": `value` indexes Program::strings
     Pointer,    // P10: `value` is the step index to continue at
     Nesting,    // N0: `value` is the level
+    // A global label in the label area (no device; devicemodel/labels.hpp):
+    // reached through DeviceMemory's label words, which tell the observer themselves.
+    LabelBit,   // `number` is the bit: word x 16 + bit
+    LabelWord,  // `number` is the first word (32-bit operands: this one and the next)
 };
 enum class Plane : std::uint8_t { Bits = 0, Coils = 1, Values = 2 };
 
@@ -218,11 +222,19 @@ inline void store_word(Machine& m, Area area, std::uint32_t n, std::uint32_t val
     if (m.observed) [[unlikely]] notify(m, Plane::Values, area, n);
 }
 
+inline bool read_label_bit(const Machine& m, std::uint32_t bit) { return (m.memory->label_word(bit / 16) >> (bit % 16)) & 1u; }
+inline void write_label_bit(Machine& m, std::uint32_t bit, bool on) {
+    const auto word = m.memory->label_word(bit / 16);
+    const auto mask = static_cast<std::uint16_t>(1u << (bit % 16));
+    m.memory->set_label_word(bit / 16, static_cast<std::uint16_t>(on ? (word | mask) : (word & ~mask)));
+}
+
 inline bool read_bit(Machine& m, const Operand& o) {
     if (o.kind == OperandKind::Bit) [[likely]] {
         const auto n = effective(m, o, 1);
         return m.bytes[static_cast<std::size_t>(o.plane)][static_cast<std::size_t>(o.area)][n] != 0;
     }
+    if (o.kind == OperandKind::LabelBit) return read_label_bit(m, o.number);
     const auto n = effective(m, o, 1);   // BitOfWord
     return (m.words[static_cast<std::size_t>(o.area)][n] >> o.bit) & 1u;
 }
@@ -236,6 +248,7 @@ inline void write_bit(Machine& m, const Operand& o, bool on) {
     const auto n = effective(m, o, 1);
     if (m.fault) return;
     if (o.kind == OperandKind::Bit) [[likely]] return store_byte(m, o.plane, o.area, n, on);
+    if (o.kind == OperandKind::LabelBit) return write_label_bit(m, o.number, on);
     const auto word = m.words[static_cast<std::size_t>(o.area)][n];
     const auto mask = 1u << o.bit;
     store_word(m, o.area, n, on ? (word | mask) : (word & ~mask));
@@ -265,6 +278,7 @@ inline std::int32_t get16(Machine& m, const Operand& o) {
         case OperandKind::Word:
         case OperandKind::Wide: return static_cast<std::int16_t>(m.words[static_cast<std::size_t>(o.area)][effective(m, o, 1)]);
         case OperandKind::Digits: return static_cast<std::int32_t>(gather_digits(m, o));
+        case OperandKind::LabelWord: return static_cast<std::int16_t>(m.memory->label_word(o.number));
         default: return 0;
     }
 }
@@ -285,6 +299,8 @@ inline std::int32_t get32(Machine& m, const Operand& o) {
         }
         case OperandKind::Wide: return static_cast<std::int32_t>(m.words[static_cast<std::size_t>(o.area)][effective(m, o, 1)]);
         case OperandKind::Digits: return static_cast<std::int32_t>(gather_digits(m, o));
+        case OperandKind::LabelWord:
+            return static_cast<std::int32_t>(m.memory->label_word(o.number) | std::uint32_t{m.memory->label_word(o.number + 1)} << 16);
         default: return 0;
     }
 }
@@ -302,6 +318,7 @@ inline void put16(Machine& m, const Operand& o, std::int32_t v) {
             return;
         }
         case OperandKind::Digits: return scatter_digits(m, o, static_cast<std::uint32_t>(v));
+        case OperandKind::LabelWord: return m.memory->set_label_word(o.number, static_cast<std::uint16_t>(v));
         default: return;
     }
 }
@@ -321,6 +338,10 @@ inline void put32(Machine& m, const Operand& o, std::int32_t v) {
             return;
         }
         case OperandKind::Digits: return scatter_digits(m, o, static_cast<std::uint32_t>(v));
+        case OperandKind::LabelWord:
+            m.memory->set_label_word(o.number, static_cast<std::uint16_t>(v));
+            m.memory->set_label_word(o.number + 1, static_cast<std::uint16_t>(static_cast<std::uint32_t>(v) >> 16));
+            return;
         default: return;
     }
 }

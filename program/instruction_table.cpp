@@ -223,6 +223,46 @@ const InstructionInfo* find_instruction(std::string_view mnemonic) {
     return nullptr;
 }
 
+}  // namespace slmp::program::detail
+
+namespace slmp::program {
+
+std::optional<InstructionShape> instruction_shape(std::string_view mnemonic) {
+    using detail::Role;
+    const auto* info = detail::find_instruction(mnemonic);
+    if (!info && mnemonic.size() > 1 && mnemonic.back() == 'P') {
+        info = detail::find_instruction(mnemonic.substr(0, mnemonic.size() - 1));
+        if (info && !info->pulse_form) info = nullptr;
+    }
+    if (!info) return std::nullopt;
+    InstructionShape shape;
+    for (std::size_t i = 0; i < info->form_count; ++i) {
+        shape.forms.push_back(info->forms[i].types);
+        shape.names.push_back(info->forms[i].names);
+    }
+    const bool takes_pointer = std::any_of(shape.forms.begin(), shape.forms.end(),
+                                           [](std::string_view types) { return types.find('p') != std::string_view::npos; });
+    const bool flow = info->handler == detail::stop || info->handler == detail::goend || info->handler == detail::wdt;
+    switch (info->role) {
+        case Role::Load: shape.role = InstructionShape::Role::Load; break;
+        case Role::Combine: shape.role = InstructionShape::Role::Combine; break;
+        case Role::Join: shape.role = InstructionShape::Role::Join; break;
+        case Role::BranchPush: shape.role = InstructionShape::Role::BranchPush; break;
+        case Role::BranchRead: shape.role = InstructionShape::Role::BranchRead; break;
+        case Role::BranchPop: shape.role = InstructionShape::Role::BranchPop; break;
+        case Role::Modify: shape.role = InstructionShape::Role::Modify; break;
+        case Role::Output: shape.role = InstructionShape::Role::Output; break;
+        case Role::Master:
+        case Role::Free: shape.role = InstructionShape::Role::Control; break;
+    }
+    if (takes_pointer || flow) shape.role = InstructionShape::Role::Control;
+    return shape;
+}
+
+}  // namespace slmp::program
+
+namespace slmp::program::detail {
+
 bool known_but_unsupported(std::string_view mnemonic) {
     // Unsigned (LD=_U ...) and double-float (LDED= ...) compare contacts are phase 2 (spec §5.3).
     if (mnemonic.ends_with("_U")) return true;

@@ -12,6 +12,7 @@
 
 #include "devicemodel/cpu_profile.hpp"
 #include "devicemodel/device_memory.hpp"
+#include "devicemodel/labels.hpp"
 #include "program/source.hpp"
 
 namespace slmp::program {
@@ -39,6 +40,33 @@ class Program;
 // a mnemonic the family lacks, no END). `warnings` gets what loads anyway.
 std::shared_ptr<const Program> compile(const Source& source, const devicemodel::CpuProfile& profile,
                                        const ProgramOptions& options, std::vector<std::string>* warnings = nullptr);
+// The same, where an operand that is no device may name a global label of
+// `labels` (as GX Works3 programs do): a Bit element where a bit is read or
+// written, Word [Signed/Unsigned] where a 16-bit word is, Double Word and Time
+// where a 32-bit one is, FLOAT [Single Precision] where a real is. A label on
+// a device is that device; one in the label area is reached there. The table
+// must keep its layout while the program runs (labels are declared at start).
+std::shared_ptr<const Program> compile(const Source& source, const devicemodel::CpuProfile& profile,
+                                       const ProgramOptions& options, const devicemodel::LabelTable& labels,
+                                       std::vector<std::string>* warnings = nullptr);
+
+// What a one-line instruction list (the scenario rung language, one string
+// of blank-separated tokens) needs from the instruction table to split its
+// tokens into instructions and check a rung's shape before any CPU is known.
+struct InstructionShape {
+    enum class Role : std::uint8_t {
+        Load, Combine, Join, BranchPush, BranchRead, BranchPop, Modify, Output,
+        Control,   // program flow: END, FEND, MC/MCR, jumps, calls, FOR/NEXT, STOP, GOEND, WDT, NOP
+    };
+    Role role = Role::Output;
+    // One string per form, one letter per operand (program/instruction_table.hpp
+    // explains the letters: b bit read, o bit write, w 16-bit source, W 16-bit destination …).
+    std::vector<std::string_view> forms;
+    std::vector<std::string_view> names;   // per form: "s1 s2 d"
+};
+// `mnemonic` in upper case; P forms ("MOVP") give their base's shape. Family
+// restrictions are compile()'s to report.
+std::optional<InstructionShape> instruction_shape(std::string_view mnemonic);
 
 const Source& source_of(const Program& program);
 std::size_t step_count(const Program& program);   // compiled steps (instructions, END included)

@@ -74,25 +74,24 @@ struct Binder {
         for (auto& v : values) bind(v.target, where + "/" + v.target.label);
     }
 
-    // The rung language is bits and 16-bit words: a contact or coil takes a Bit
-    // label, a word operand a Word label; RST takes either (as RST D0 / RST M0).
-    void bind(const Instruction& ins, LogicOperand& o, const std::string& where) const {
-        if (o.label.empty()) return;
-        DeviceRef ref{{}, ValueFormat::Int16, o.label};
+    // A contact or coil takes a Bit label, a 16-bit word operand a Word label,
+    // RST either (as RST D0 / RST M0); other operand types are the engine's to
+    // check when it compiles the rungs (docs/program.md: labels as operands).
+    void bind(RungOperand& o, const std::string& where) const {
+        if (!o.label) return;
+        DeviceRef ref{{}, ValueFormat::Int16, o.text};
         bind(ref, where);
+        if (o.use == RungOperand::Use::Other) return;
         const auto basic = ref.bound->basic;
         const bool word = basic == BasicType::Word || basic == BasicType::UWord;
-        if (ins.op == LogicOp::Reset && word) o.kind = LogicOperand::Kind::Word;
-        const bool fits = o.kind == LogicOperand::Kind::Bit ? basic == BasicType::Bit : word;
-        if (!fits) {
-            devicemodel::LabelType type{};
-            type.basic = basic;
-            fail(where, "label '" + o.label + "' is of type " + devicemodel::format_label_type(type) + ", where the rung needs " +
-                            (o.kind == LogicOperand::Kind::Bit ? "a bit" : "a 16-bit word"),
-                 o.kind == LogicOperand::Kind::Bit ? "name a Bit label or a bit device here"
-                                                   : "name a Word [Signed] or Word [Unsigned] label, or a word device");
-        }
-        o.bound = ref.bound;
+        const bool bit = basic == BasicType::Bit;
+        const bool needs_bit = o.use == RungOperand::Use::Bit || (o.use == RungOperand::Use::Either && !word);
+        if (needs_bit ? bit : word) return;
+        devicemodel::LabelType type{};
+        type.basic = basic;
+        fail(where, "label '" + o.text + "' is of type " + devicemodel::format_label_type(type) + ", where the rung needs " +
+                        (needs_bit ? "a bit" : "a 16-bit word"),
+             needs_bit ? "name a Bit label or a bit device here" : "name a Word [Signed] or Word [Unsigned] label, or a word device");
     }
 };
 
@@ -137,7 +136,7 @@ void bind_labels(Scenario& s, const devicemodel::LabelTable& labels) {
     }
     for (auto& rung : s.logic.rungs)
         for (auto& ins : rung.code)
-            for (auto& o : ins.operands) b.bind(ins, o, rung.pointer);
+            for (auto& o : ins.operands) b.bind(o, rung.pointer);
 }
 
 }  // namespace slmp::scenarios

@@ -74,7 +74,7 @@ void check_devices(const Scenario& s, const devicemodel::DeviceMemory& memory, c
     for (const auto& rung : s.logic.rungs)
         for (const auto& ins : rung.code)
             for (const auto& o : ins.operands)
-                if (o.kind != LogicOperand::Kind::Constant && o.label.empty()) c.fits(o.device, 1, rung.pointer);
+                if (o.device) c.fits(*o.device, 1, rung.pointer);
 }
 
 }  // namespace slmp::scenarios

@@ -1,151 +1,95 @@
-// Evaluating the rung language (logic.hpp) with MELSEC's block stack: LD
-// pushes a block, AND/OR change the top one, ANB/ORB join the top two, an
-// output uses the top one. Word arithmetic is 16-bit signed and wraps, as the
-// CPU's BIN 16-bit instructions do.
+// The rungs as a client of the program engine (logic.hpp): translated into a
+// program::Source (one line per instruction, the rung's number as its line),
+// compiled against the CPU's profile and global labels, executed per scan.
+#include <charconv>
+
+#include "config/config.hpp"
+#include "program/program.hpp"
 #include "scenarios/logic.hpp"
 
 namespace slmp::scenarios {
 namespace {
 
-using devicemodel::DeviceMemory;
-using devicemodel::DeviceSpec;
-using devicemodel::Part;
+// Messages of the engine name "<file>: line <n>: …"; the rungs are the lines.
+constexpr const char* kSourceName = "logic";
 
-const DeviceSpec* part_of(devicemodel::Area area, Part part) {
-    for (const auto& spec : devicemodel::all_devices())
-        if (spec.area == area && spec.part == part) return &spec;
-    return nullptr;
-}
-
-// Operands are devices or bound labels (one word or one bit, devicemodel's
-// element access wherever the label lives).
-std::int16_t read_word(const DeviceMemory& memory, const LogicOperand& o) {
-    if (o.kind == LogicOperand::Kind::Constant) return static_cast<std::int16_t>(o.constant);
-    if (o.bound) return static_cast<std::int16_t>(devicemodel::read_element(memory, *o.bound, 0)[0]);
-    return static_cast<std::int16_t>(memory.value(*o.device.spec, o.device.number) & 0xFFFF);
-}
-
-void write_word(DeviceMemory& memory, const LogicOperand& o, std::int32_t value) {
-    const std::uint16_t word = static_cast<std::uint16_t>(value);
-    if (o.bound) return devicemodel::write_element(memory, *o.bound, 0, std::span(&word, 1));
-    memory.set_value(*o.device.spec, o.device.number, word);
-}
-
-bool read_bit(const DeviceMemory& memory, const LogicOperand& o) {
-    if (o.bound) return devicemodel::read_element(memory, *o.bound, 0)[0] & 1;
-    return memory.bit(*o.device.spec, o.device.number);
-}
-
-void write_bit(DeviceMemory& memory, const LogicOperand& o, bool on) {
-    if (o.bound) return write_word(memory, o, on ? 1 : 0);
-    memory.set_bit(*o.device.spec, o.device.number, on);
+// Operation errors do not stop the CPU for the scenario's rungs: they stand
+// for plant wiring, not the user's program; SM0/SM1/SD0 still tell.
+program::ProgramOptions rung_options() {
+    program::ProgramOptions options;
+    options.operation_error = program::OnOperationError::Continue;
+    return options;
 }
 
 }  // namespace
 
-LogicRunner::LogicRunner(const LogicProgram& program) : program_(program), memory_(program.memory_slots) {
-    timers_.configure(program.timers, program.counters);
-}
+struct LogicRunner::Engine {
+    program::Execution execution;
+};
 
-void LogicRunner::stopped() {
-    std::fill(memory_.begin(), memory_.end(), 0);
-    timers_.reset_tracking();
-}
+LogicRunner::~LogicRunner() = default;
 
-bool LogicRunner::contact(const DeviceMemory& memory, const Instruction& ins) {
-    if (ins.contact == Contact::Compare)
-        return compare(read_word(memory, ins.operands[0]), ins.compare, read_word(memory, ins.operands[1]));
-    bool on = read_bit(memory, ins.operands[0]);
-    switch (ins.contact) {
-        case Contact::Normal: return on;
-        case Contact::Inverted: return !on;
-        case Contact::Rising:
-        case Contact::Falling: {
-            bool before = memory_[ins.memory] != 0;
-            memory_[ins.memory] = on ? 1 : 0;
-            return ins.contact == Contact::Rising ? on && !before : !on && before;
-        }
-        case Contact::Compare: break;
-    }
-    return false;
-}
-
-void LogicRunner::output(DeviceMemory& memory, const Instruction& ins, bool power) {
-    if (ins.pulse) {   // P forms run on the rung's rising edge only
-        bool before = memory_[ins.memory] != 0;
-        memory_[ins.memory] = power ? 1 : 0;
-        power = power && !before;
-    }
-    const auto& o = ins.operands.empty() ? LogicOperand{} : ins.operands.back();
-    switch (ins.op) {
-        case LogicOp::Out:
-            write_bit(memory, o, power);   // a bit, or a T/ST/C coil
-            return;
-        case LogicOp::Set:
-            if (power) write_bit(memory, o, true);
-            return;
-        case LogicOp::Reset:
-            if (!power) return;
-            if (o.kind == LogicOperand::Kind::Timer) {   // RST T0 / C0: value 0, contact off
-                auto area = o.device.spec->area;
-                memory.set_value(*part_of(area, Part::Value), o.device.number, 0);
-                memory.set_bit(*part_of(area, Part::Contact), o.device.number, false);
-            } else if (o.kind == LogicOperand::Kind::Word) {
-                write_word(memory, o, 0);
-            } else {
-                write_bit(memory, o, false);
-            }
-            return;
-        case LogicOp::Move:
-            if (power) write_word(memory, o, read_word(memory, ins.operands[0]));
-            return;
-        case LogicOp::Add:
-        case LogicOp::Sub: {
-            if (!power) return;
-            std::int32_t a = read_word(memory, ins.operands[0]), b = read_word(memory, ins.operands[1]);
-            write_word(memory, o, ins.op == LogicOp::Add ? a + b : a - b);
-            return;
-        }
-        case LogicOp::Inc:
-        case LogicOp::Dec:
-            if (power) write_word(memory, o, read_word(memory, o) + (ins.op == LogicOp::Inc ? 1 : -1));
-            return;
-        default: return;
-    }
-}
-
-void LogicRunner::scan(DeviceMemory& memory, std::chrono::microseconds elapsed) {
-    std::vector<bool> blocks;
-    for (const auto& rung : program_.rungs) {
-        blocks.clear();
+LogicRunner::LogicRunner(const LogicProgram& logic, const std::string& source, const devicemodel::Cpu& cpu)
+    : source_(source) {
+    if (logic.rungs.empty()) return;
+    program::Source rungs;
+    rungs.file = kSourceName;
+    for (const auto& rung : logic.rungs) {
+        pointers_.push_back(rung.pointer);
         for (const auto& ins : rung.code) {
-            switch (ins.op) {
-                case LogicOp::Load:
-                    if (ins.new_line) blocks.clear();
-                    blocks.push_back(contact(memory, ins));
-                    break;
-                case LogicOp::And: {
-                    bool c = contact(memory, ins);   // always evaluated: edge memory must follow the device
-                    blocks.back() = blocks.back() && c;
-                    break;
-                }
-                case LogicOp::Or: {
-                    bool c = contact(memory, ins);
-                    blocks.back() = blocks.back() || c;
-                    break;
-                }
-                case LogicOp::AndBlock:
-                case LogicOp::OrBlock: {
-                    bool top = blocks.back();
-                    blocks.pop_back();
-                    blocks.back() = ins.op == LogicOp::AndBlock ? blocks.back() && top : blocks.back() || top;
-                    break;
-                }
-                default: output(memory, ins, blocks.back());
-            }
+            program::SourceLine line;
+            line.row = pointers_.size();
+            line.mnemonic = ins.mnemonic;
+            for (const auto& o : ins.operands) line.operands.push_back(o.text);
+            rungs.lines.push_back(std::move(line));
         }
     }
-    timers_.run(memory, elapsed);
+    program::SourceLine end;
+    end.row = pointers_.size() + 1;
+    end.mnemonic = "END";
+    rungs.lines.push_back(end);
+
+    try {
+        engine_ = std::make_unique<Engine>(Engine{program::Execution(program::compile(rungs, cpu.profile(), rung_options(), cpu.labels()))});
+    } catch (const program::LoadError& e) {
+        // The first problem, as "<scenario file>: /logic/<n>: <problem>".
+        const std::string prefix = std::string(kSourceName) + ": line ";
+        std::string text = e.problems.empty() ? "the rungs do not compile" : e.problems.front();
+        std::string where = "/logic";
+        if (text.starts_with(prefix)) {
+            std::size_t row = 0;
+            const char* digits = text.data() + prefix.size();
+            auto [end_of_number, ec] = std::from_chars(digits, text.data() + text.size(), row);
+            if (ec == std::errc{} && row >= 1 && row <= pointers_.size()) where = pointers_[row - 1];
+            text = std::string(end_of_number);
+            if (text.starts_with(": ")) text = text.substr(2);
+        }
+        throw config::ConfigError(source_ + ": " + where + ": " + text +
+                                  "; change the rung (docs/scenarios.md \"Logic\", docs/program.md list the instructions and operands)");
+    }
 }
+
+std::optional<std::string> LogicRunner::scan(devicemodel::DeviceMemory& memory, std::chrono::microseconds elapsed) {
+    if (!engine_) return std::nullopt;
+    auto& execution = engine_->execution;
+    if (restart_) {   // the first scan in RUN: edges and accumulators start afresh
+        execution.restart();
+        restart_ = false;
+    }
+    const auto outcome = execution.scan(memory);
+    execution.end_of_scan(elapsed);
+    if (!outcome.error) {
+        last_problem_.clear();
+        return std::nullopt;
+    }
+    const auto& error = *outcome.error;
+    const auto rung = error.row >= 1 && error.row <= pointers_.size() ? pointers_[error.row - 1] : std::string("/logic");
+    auto problem = source_ + ": " + rung + ": '" + error.mnemonic + "': " + error.message;
+    if (problem == last_problem_) return std::nullopt;
+    last_problem_ = problem;
+    return problem;
+}
+
+void LogicRunner::stopped() { restart_ = true; }
 
 }  // namespace slmp::scenarios

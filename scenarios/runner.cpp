@@ -45,7 +45,7 @@ ScenarioRunner::ScenarioRunner(std::vector<Scenario> scenarios, devicemodel::Cpu
         check_devices(s, cpu_.memory(), cpu_.profile().name);
         check_drives(s, cpu_);
         timelines_.push_back(std::make_unique<TimelineRunner>(s.timeline, s.seed, station_));
-        logic_.push_back(std::make_unique<LogicRunner>(s.logic));
+        logic_.push_back(std::make_unique<LogicRunner>(s.logic, s.source, cpu_));
         for (const auto& t : s.triggers) triggers_.add(t);
         for (std::size_t i = 0; i < s.faults.size(); ++i) faults_.add(s.faults[i], s.source, Rng::stream(s.seed, i), s.name);
         if (s.replay) {
@@ -96,7 +96,13 @@ void ScenarioRunner::scan(TimePoint now) {
     for (auto& t : timelines_) t->advance(memory, now_ms_, log_);
     if (!powered_) return;   // no program, no conditions while the CPU is off
     const bool running = cpu_.runtime().state() == devicemodel::RunState::Run;
-    for (auto& l : logic_) running ? l->scan(memory, elapsed) : l->stopped();
+    for (auto& l : logic_) {
+        if (!running) {
+            l->stopped();
+        } else if (auto problem = l->scan(memory, elapsed); problem && log_) {
+            log_(EventLevel::Warn, "logic: " + *problem);
+        }
+    }
 
     std::vector<const Trigger*> fired;
     triggers_.scan(memory, now_ms_, fired);

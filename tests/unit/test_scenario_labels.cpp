@@ -168,6 +168,15 @@ TEST_CASE("scenario labels: the rung logic reads and writes Bit and Word labels"
     CHECK(words(rig.cpu, "Alarm") == std::vector<std::uint16_t>{0});
 }
 
+TEST_CASE("scenario labels: rungs reach 32-bit labels in the label area through the engine", "[scenario][labels][logic]") {
+    ScenarioRig rig(R"({"logic": ["LD SM400 DMOV K100000 Count DINC Count"]})", "R08CPU", kLabels);
+    rig.scan(0);
+    CHECK(dint(rig.cpu, "Count") == 100001);
+    CHECK_THAT(start_error(R"({"logic": ["LD SM400 DMOV K1 Level"]})"),
+               Catch::StartsWith("test.json: /logic/0: label 'Level' is of type FLOAT [Single Precision]; 'DMOV' needs a "
+                                 "Double Word or Time label here"));
+}
+
 TEST_CASE("scenario labels: rung operands of the wrong type or unknown stop the start", "[scenario][labels][logic]") {
     CHECK(start_error(R"({"logic": ["LD LabelW OUT Y0"]})") ==
           "test.json: /logic/0: label 'LabelW' is of type Word [Signed], where the rung needs a bit; name a Bit label "

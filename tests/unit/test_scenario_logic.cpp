@@ -167,3 +167,41 @@ TEST_CASE("logic: devices past the CPU's sizes are refused when the scenario sta
     CHECK_THROWS_WITH(ScenarioRig(rungs({"LD X0 OUT M20000"})),
                       "test.json: /logic/0: M20000 is outside the M size of 12288 in profile R08CPU; use a smaller device number or raise device_sizes");
 }
+
+TEST_CASE("logic: rungs are compiled by the program engine: its instructions beyond the rung list work",
+          "[scenario][logic]") {
+    ScenarioRig rig(program({
+        "LD X0 MPS AND X1 OUT Y0 MRD AND X2 OUT Y1 MPP OUT Y2",
+        "LD SM400 DMOV K100000 D10 + K5 D20",
+        "LDP X0 FF M5",
+    }));
+    set(rig.cpu, "X0", 1);
+    set(rig.cpu, "X2", 1);
+    rig.scan(0);
+    CHECK(rig["Y0"] == 0);
+    CHECK(rig["Y1"] == 1);
+    CHECK(rig["Y2"] == 1);
+    CHECK((rig["D10"] | rig["D11"] << 16) == 100000);
+    CHECK(rig["D20"] == 5);   // + s d: d := d + s
+    CHECK(rig["M5"] == 1);
+}
+
+TEST_CASE("logic: timers follow the CPU rule: the contact moves when OUT T executes", "[scenario][logic]") {
+    // The rung before OUT T0 sees its contact one scan after the rung after it.
+    ScenarioRig rig(program({"LD T0 OUT Y0", "LD SM400 OUT T0 K1", "LD T0 OUT Y1"}));
+    rig.scan(0);
+    rig.scan(100);   // OUT T0 sees the 0 ms collected so far
+    CHECK(rig["Y1"] == 0);
+    rig.scan(200);   // the 100 ms of scan 100 reached the preset at this OUT T0
+    CHECK(rig["TN0"] == 1);
+    CHECK(rig["Y1"] == 1);
+    CHECK(rig["Y0"] == 0);
+    rig.scan(300);
+    CHECK(rig["Y0"] == 1);
+}
+
+TEST_CASE("logic: what only the CPU can tell is refused at start with the rung's pointer", "[scenario][logic][loader]") {
+    CHECK_THROWS_WITH(ScenarioRig(program({"LD X0 OUT Y0", "LD X0 LDPI X1 ORB OUT Y1"}), "Q03UDVCPU"),
+                      Catch::StartsWith("test.json: /logic/1: 'LDPI' is no instruction of Q03UDVCPU"));
+    CHECK_THROWS_WITH(scenario(program({"LD X0 CALL P0"})), Catch::Contains("/logic/0: 'CALL': unknown instruction in the rung language"));
+}
