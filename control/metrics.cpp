@@ -1,4 +1,5 @@
 #include "control/metrics.hpp"
+#include "station/cpu_program.hpp"
 
 #include <cstdio>
 
@@ -209,6 +210,22 @@ std::string Metrics::render() const {
         out += "slmp_scan_time_seconds{kind=\"current\"} " + seconds(scan->current) + "\n";
         out += "slmp_scan_time_seconds{kind=\"min\"} " + seconds(scan->min) + "\n";
         out += "slmp_scan_time_seconds{kind=\"max\"} " + seconds(scan->max) + "\n";
+    }
+
+    // The PLC program (docs/program.md), read when scraped; absent without one.
+    if (const auto* program = station_.program(); program && program->loaded()) {
+        const auto& stats = program->statistics();
+        const auto modelled = program->execution()->modelled_times();
+        header(out, "slmp_program_scans_total", "counter", "Scans the loaded PLC program ran.");
+        out += "slmp_program_scans_total " + std::to_string(stats.scans) + "\n";
+        header(out, "slmp_program_operation_errors_total", "counter", "Scans of the PLC program that raised an operation error or the watchdog.");
+        out += "slmp_program_operation_errors_total " + std::to_string(stats.operation_errors) + "\n";
+        header(out, "slmp_program_execution_seconds", "gauge",
+               "Modelled execution time of the program's scans (instructions and END processing): the last, the least and the most.");
+        auto seconds = [](std::chrono::nanoseconds ns) { return number(std::chrono::duration<double>(ns).count()); };
+        out += "slmp_program_execution_seconds{kind=\"last\"} " + seconds(modelled.last) + "\n";
+        out += "slmp_program_execution_seconds{kind=\"min\"} " + seconds(modelled.min) + "\n";
+        out += "slmp_program_execution_seconds{kind=\"max\"} " + seconds(modelled.max) + "\n";
     }
 
     // Read from the scenarios when scraped: a counter per running fault, gone

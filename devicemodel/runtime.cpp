@@ -45,8 +45,6 @@ void Runtime::scan(DeviceMemory& memory, TimePoint now, const CalendarTime& cale
     special::publish_second_counter(memory, since);
     special::publish_calendar(memory, calendar, family_);
     if (state_.state() != RunState::Run) return;   // STOP/PAUSE: nothing times
-    // SD420, the scan counter: +1 each scan in RUN, wrapping as a 16-bit word.
-    special::set_sd(memory, 420, (special::sd(memory, 420) + 1) & 0xFFFF);
 
     timers_.run(memory, elapsed);
     if (first_scan_) {

@@ -26,7 +26,7 @@ def generate(steps):
     lines, n, rung = [], 0, 0
     while n < steps:
         r = rung % 4
-        m, d, t = rung % 4000, rung % 4000, rung % 1000
+        m, d, t = rung % 4000, rung % 4000, rung // 4   # one timer a timer rung (no double coils)
         if r == 0:    # contacts and a coil
             lines += [f"LD X{m % 256:X}", f"AND M{m}", f"ORI M{m + 1}", f"ANI X{(m + 1) % 256:X}", f"OUT M{m + 4000}"]
         elif r == 1:  # word moves and arithmetic

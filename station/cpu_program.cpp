@@ -6,6 +6,8 @@
 
 #include <spdlog/logger.h>
 
+#include "devicemodel/byte_reader.hpp"
+
 namespace slmp::station {
 
 using devicemodel::RunState;
@@ -155,26 +157,56 @@ void CpuProgram::powered_on() {
     execution_->clear_last_error();   // a RESET or power cycle erases the CPU's error
 }
 
-CpuProgram::Saved CpuProgram::save() const {
-    Saved saved;
-    if (!execution_) return saved;
-    const auto& source = program::source_of(execution_->program());
-    saved.file = source.file;
-    saved.source_csv = program::write_csv(source);
-    saved.state = execution_->save_state();
-    return saved;
+namespace {
+
+void put_part(std::vector<std::uint8_t>& out, std::span<const std::uint8_t> bytes) {
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(bytes.size() >> (8 * i)));
+    out.insert(out.end(), bytes.begin(), bytes.end());
 }
 
-void CpuProgram::restore(const Saved& saved) {
-    if (saved.source_csv.empty()) {
+std::span<const std::uint8_t> as_bytes(const std::string& text) {
+    return {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()};
+}
+
+}  // namespace
+
+// Layout: u32 n + file name | u32 n + the source as GX Works CSV | u32 n + engine state.
+std::vector<std::uint8_t> CpuProgram::save() const {
+    std::vector<std::uint8_t> out;
+    if (!execution_) return out;
+    const auto& source = program::source_of(execution_->program());
+    put_part(out, as_bytes(source.file));
+    put_part(out, as_bytes(program::write_csv(source)));
+    put_part(out, execution_->save_state());
+    return out;
+}
+
+void CpuProgram::restore(std::span<const std::uint8_t> bytes, const std::string& source) {
+    if (bytes.empty()) {
         execution_.reset();
         return;
     }
-    if (!execution_ || program::write_csv(program::source_of(execution_->program())) != saved.source_csv) {
-        std::vector<std::string> warnings;
-        install(compile(saved.source_csv, saved.file, warnings), std::move(warnings));
+    devicemodel::ByteReader in(bytes);
+    auto part = [&]() {
+        auto n = in.u32();
+        auto data = n ? in.bytes(*n) : std::nullopt;
+        if (!data) throw config::ConfigError(source + ": the program part is cut short; take the snapshot again");
+        return *data;
+    };
+    const auto file = part();
+    const auto csv = part();
+    const auto state = part();
+    const std::string name(file.begin(), file.end());
+    const std::string text(csv.begin(), csv.end());
+    try {
+        if (!execution_ || program::write_csv(program::source_of(execution_->program())) != text) {
+            std::vector<std::string> warnings;
+            install(compile(text, name, warnings), std::move(warnings));
+        }
+    } catch (const program::LoadError& e) {
+        throw config::ConfigError(source + ": its program does not load on this CPU: " + e.problems.front());
     }
-    if (!execution_->restore_state(saved.state)) execution_->restart();
+    if (!execution_->restore_state(std::vector<std::uint8_t>(state.begin(), state.end()))) execution_->restart();
 }
 
 }  // namespace slmp::station

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -63,16 +64,14 @@ public:
     const program::Execution* execution() const { return execution_ ? &*execution_ : nullptr; }
     const Statistics& statistics() const { return statistics_; }
 
-    // Engine state for snapshots: the program's identity (its CSV text) and
-    // its edge bits and accumulators; restore() puts back a program that
-    // differs and its state.
-    struct Saved {
-        std::string file;
-        std::string source_csv;          // empty: no program
-        std::vector<std::uint8_t> state;
-    };
-    Saved save() const;
-    void restore(const Saved& saved);
+    // The program and its engine state for station snapshots (a "program"
+    // part, so the file form carries it too): the source as GX Works CSV, its
+    // file name, edge bits and accumulators. Empty: no program loaded.
+    std::vector<std::uint8_t> save() const;
+    // Puts back the program of `bytes` (compiled again when it differs) and
+    // its engine state; throws config::ConfigError naming `source` when the
+    // bytes are damaged or the program no longer loads on this CPU.
+    void restore(std::span<const std::uint8_t> bytes, const std::string& source);
 
 private:
     void state_changing(devicemodel::DeviceMemory& memory, devicemodel::RunState before,

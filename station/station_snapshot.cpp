@@ -2,6 +2,8 @@
 // (station/station_snapshot.hpp). Everything runs on the io_context thread
 // between two requests, so a restore is atomic for every client.
 #include "station/station_snapshot.hpp"
+
+#include "station/cpu_program.hpp"
 #include "station/frontend_state.hpp"
 
 #include <cstring>
@@ -102,8 +104,8 @@ std::vector<std::uint8_t> encode_station_file(const StationSnapshot& snapshot) {
     if (!snapshot.cpus.empty())
         switch_byte.push_back(snapshot.cpus[0].run_switch == devicemodel::RunSwitch::Run ? 1 : 0);
     std::vector<std::uint8_t> out(std::begin(kFileMagic), std::end(kFileMagic));
-    put_u32(out, static_cast<std::uint32_t>(blobs.size() + 1));
     for (const auto& [name, bytes] : snapshot.units) blobs.emplace_back("unit " + name, &bytes);
+    put_u32(out, static_cast<std::uint32_t>(blobs.size() + 1));   // the parts, then "switch"
     for (const auto& [name, bytes] : blobs) put_blob(out, name, *bytes);
     put_blob(out, "switch", switch_byte);
     return out;
@@ -170,6 +172,7 @@ StationSnapshot Station::snapshot() {
     for (auto* cpu : all_cpus()) s.cpus.push_back(take(*cpu));
     s.scenarios = scenario_.scenario_groups();
     s.units = take_units(frontends_);
+    if (program_) s.units["program"] = program_->save();
     if (scan_) {
         s.clock = scan_->clock().now();
         s.has_clock = true;
@@ -185,6 +188,7 @@ void Station::restore(const StationSnapshot& s, bool drop_connections) {
                                   std::to_string(cpus.size()) + "; restore it with the configuration it was taken with");
     // The front ends' state first: it is checked whole before anything changes.
     give_units(s.units, frontends_);
+    if (auto part = s.units.find("program"); program_ && part != s.units.end()) program_->restore(part->second, "the snapshot");
     // The scenarios first: stopping one ends its power cut, which restarts sessions.
     if (s.has_scenarios) scenario_.replace_scenarios(s.scenarios);
     for (std::size_t i = 0; i < s.cpus.size(); ++i) give_back(s.cpus[i], *cpus[i], "CPU No." + std::to_string(i + 1));

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "frames.hpp"
+#include "protocol/client_commands.hpp"
 #include "http_client.hpp"
 #include "link.hpp"
 #include "sim_process.hpp"
@@ -446,11 +447,11 @@ TEST_CASE("program §8.16 STOP/RUN around the self-holding circuit: output mode 
 }
 
 TEST_CASE("program: an SLMP write to a device the program drives is overwritten at its next OUT", "[program]") {
-    ProgramRig rig(forms_of("8_1").front());
+    ProgramRig rig(forms_of("8_2").front());   // LD T0 OUT Y0
     rig.run_to(1);
     rig.set("Y0", true);            // accepted, as on the real CPU
     CHECK(rig.bit("Y0"));
-    rig.scans(1);                   // X0 = 0, Y0 = 0 -> OUT Y0 writes 0 again
+    rig.scans(1);                   // T0 is off -> OUT Y0 writes 0 again
     CHECK_FALSE(rig.bit("Y0"));
 }
 
@@ -475,6 +476,10 @@ TEST_CASE("program: a program that does not load stops the start with exit code 
 TEST_CASE("program API: read back both formats, replace in STOP only, unload, load errors as 422", "[program][http]") {
     ProgramRig rig(forms_of("8_1").front());
     const auto port = rig.http_port();
+    rig.scans(3);
+    auto metrics = http_get(port, "/metrics").body;
+    CHECK(metrics.find("slmp_program_scans_total 3\n") != std::string::npos);
+    CHECK(metrics.find("slmp_program_execution_seconds{kind=\"last\"} ") != std::string::npos);
     auto info = rig.program();
     CHECK(info["state"] == "loaded");
     CHECK(info["file"] == "example_8_1.il");
@@ -512,4 +517,23 @@ TEST_CASE("program API: read back both formats, replace in STOP only, unload, lo
     CHECK(http_get(port, "/api/program/source").status == 404);
     CHECK(http(port, "POST", "/api/program/reload").status == 200);
     CHECK(rig.program()["file"] == "example_8_1.il");
+}
+
+TEST_CASE("program: a snapshot holds the program's timers and edges; restore goes on from there", "[program][snapshot]") {
+    ProgramRig rig(forms_of("8_2").front());
+    const auto port = rig.http_port();
+    rig.set("X0", true);
+    rig.run_to(50);
+    CHECK(rig.word("TN0") == 4);
+    REQUIRE(http(port, "POST", "/api/snapshots", R"({"name": "at50"})").status == 201);
+    rig.scans(120);
+    CHECK(rig.word("TN0") == 16);
+    REQUIRE(http(port, "POST", "/api/snapshots/at50/restore", "").status == 200);
+    CHECK(rig.word("TN0") == 4);
+    rig.scans(150);                 // scan 200 again: 19, not yet up
+    CHECK(rig.word("TN0") == 19);
+    CHECK_FALSE(rig.bit("TS0"));
+    rig.scans(1);                   // scan 201: the contact, exactly as without the detour
+    CHECK(rig.word("TN0") == 20);
+    CHECK(rig.bit("Y0"));
 }

@@ -223,10 +223,6 @@ TEST_CASE("special relays and registers", "[runtime][special]") {
         CHECK(rig.get("SD524") == 12);
         CHECK(rig.get("SD525") == 345);
     }
-    SECTION("SD420 counts the scans in RUN") {
-        rig.scans(3, 10ms);
-        CHECK(rig.get("SD420") == 3);
-    }
     SECTION("SD210-SD216 calendar, binary on iQ-R") {
         rig.scan();
         CHECK(rig.get("SD210") == 2024);

@@ -6,7 +6,7 @@ using namespace slmp::test;
 
 namespace {
 
-std::string rungs(std::initializer_list<const char*> rungs) {
+std::string rung_file(std::initializer_list<const char*> rungs) {
     std::string json = R"({"logic": [)";
     bool first = true;
     for (const auto* r : rungs) {
@@ -19,7 +19,7 @@ std::string rungs(std::initializer_list<const char*> rungs) {
 }  // namespace
 
 TEST_CASE("logic: a start button latches the motor, stop releases it", "[scenario][logic]") {
-    ScenarioRig rig(rungs({"LD M0 OR Y0 ANI M1 OUT Y0"}));
+    ScenarioRig rig(rung_file({"LD M0 OR Y0 ANI M1 OUT Y0"}));
     rig.scan(0);
     CHECK(rig["Y0"] == 0);
     set(rig.cpu, "M0", 1);
@@ -34,7 +34,7 @@ TEST_CASE("logic: a start button latches the motor, stop releases it", "[scenari
 }
 
 TEST_CASE("logic: an on-delay timer (100 ms base) and its contact", "[scenario][logic]") {
-    ScenarioRig rig(rungs({"LD Y0 OUT T0 K20", "LD T0 OUT Y1", "LD SM400 MOV T0 D0"}));
+    ScenarioRig rig(rung_file({"LD Y0 OUT T0 K20", "LD T0 OUT Y1", "LD SM400 MOV T0 D0"}));
     set(rig.cpu, "Y0", 1);
     rig.scan_through(0, 2000);
     CHECK(rig["Y1"] == 0);   // T0 reaches K20 at the END of the 2000 ms scan; its rungs still saw 19
@@ -52,7 +52,7 @@ TEST_CASE("logic: an on-delay timer (100 ms base) and its contact", "[scenario][
 }
 
 TEST_CASE("logic: a counter counts rising edges up to its preset, RST clears it", "[scenario][logic]") {
-    ScenarioRig rig(rungs({"LD X0 OUT C0 K3", "LD C0 OUT Y2", "LD X1 RST C0"}));
+    ScenarioRig rig(rung_file({"LD X0 OUT C0 K3", "LD C0 OUT Y2", "LD X1 RST C0"}));
     rig.scan(0);
     for (int i = 1; i <= 10; ++i) {
         set(rig.cpu, "X0", i % 2);
@@ -68,7 +68,7 @@ TEST_CASE("logic: a counter counts rising edges up to its preset, RST clears it"
 }
 
 TEST_CASE("logic: compare contacts, SET/RST, arithmetic, P forms", "[scenario][logic]") {
-    ScenarioRig rig(rungs({
+    ScenarioRig rig(rung_file({
         "LD>= D100 K50 SET M10",
         "LD< D100 K10 RST M10",
         "LD<> D1 D2 OUT M11",
@@ -105,7 +105,7 @@ TEST_CASE("logic: compare contacts, SET/RST, arithmetic, P forms", "[scenario][l
 }
 
 TEST_CASE("logic: ANB, ORB and several lines in one rung", "[scenario][logic]") {
-    ScenarioRig rig(rungs({"LD X0 OR X1 LD X2 OR X3 ANB OUT Y0 LD X4 LD X5 ORB OUT Y1"}));
+    ScenarioRig rig(rung_file({"LD X0 OR X1 LD X2 OR X3 ANB OUT Y0 LD X4 LD X5 ORB OUT Y1"}));
     auto check = [&](std::initializer_list<int> x, int y0, int y1) {
         int i = 0;
         for (int v : x) set(rig.cpu, "X" + std::to_string(i++), v);
@@ -120,7 +120,7 @@ TEST_CASE("logic: ANB, ORB and several lines in one rung", "[scenario][logic]") 
 }
 
 TEST_CASE("logic: runs only in RUN, outside RUN nothing changes and timers do not time", "[scenario][logic]") {
-    ScenarioRig rig(rungs({"LD SM400 INC D0", "LD SM400 OUT T1 K5"}));
+    ScenarioRig rig(rung_file({"LD SM400 INC D0", "LD SM400 OUT T1 K5"}));
     rig.scan(0);
     rig.scan(10);
     CHECK(rig["D0"] == 2);
@@ -135,7 +135,7 @@ TEST_CASE("logic: runs only in RUN, outside RUN nothing changes and timers do no
 
 TEST_CASE("logic: rung mistakes are refused with the rung's pointer and the fix", "[scenario][logic][loader]") {
     auto fails_with = [](std::initializer_list<const char*> rungs, const std::string& message) {
-        CHECK_THROWS_WITH(scenario(rungs(rungs)), Catch::Contains(message));
+        CHECK_THROWS_WITH(scenario(rung_file(rungs)), Catch::Contains(message));
     };
     fails_with({"LD X0 OUT Y0", "OUT Y1"}, "test.json: /logic/1: 'OUT': no condition before this output; start the rung with LD");
     fails_with({"LD X0 LD X1 OUT Y0"}, "test.json: /logic/0: 'OUT': 2 open blocks before this output; join them with ANB or ORB");
@@ -154,23 +154,23 @@ TEST_CASE("logic: rung mistakes are refused with the rung's pointer and the fix"
 TEST_CASE("logic: an operand that is neither a device nor a label is refused when the scenario starts",
           "[scenario][logic][loader]") {
     // Not a device, so possibly a label: only the CPU's label table can tell (bind_labels).
-    CHECK_THROWS_WITH(ScenarioRig(rungs({"LD Q0 OUT Y0"})),
+    CHECK_THROWS_WITH(ScenarioRig(rung_file({"LD Q0 OUT Y0"})),
                       "test.json: /logic/0: 'Q0' is neither a device nor a global label (no global label or member of "
                       "that name); name a device such as D100, or declare the label in \"labels\" / --labels "
                       "(docs/labels.md)");
-    CHECK_THROWS_WITH(ScenarioRig(rungs({"LD X0 OUT M1G"})), Catch::EndsWith(
+    CHECK_THROWS_WITH(ScenarioRig(rung_file({"LD X0 OUT M1G"})), Catch::EndsWith(
                       "as a device: bad device number '1G' in address 'M1G' (M is numbered in decimal); name a device "
                       "such as D100, or declare the label in \"labels\" / --labels (docs/labels.md)"));
 }
 
 TEST_CASE("logic: devices past the CPU's sizes are refused when the scenario starts", "[scenario][logic][loader]") {
-    CHECK_THROWS_WITH(ScenarioRig(rungs({"LD X0 OUT M20000"})),
+    CHECK_THROWS_WITH(ScenarioRig(rung_file({"LD X0 OUT M20000"})),
                       "test.json: /logic/0: M20000 is outside the M size of 12288 in profile R08CPU; use a smaller device number or raise device_sizes");
 }
 
 TEST_CASE("logic: rungs are compiled by the program engine: its instructions beyond the rung list work",
           "[scenario][logic]") {
-    ScenarioRig rig(program({
+    ScenarioRig rig(rung_file({
         "LD X0 MPS AND X1 OUT Y0 MRD AND X2 OUT Y1 MPP OUT Y2",
         "LD SM400 DMOV K100000 D10 + K5 D20",
         "LDP X0 FF M5",
@@ -188,7 +188,7 @@ TEST_CASE("logic: rungs are compiled by the program engine: its instructions bey
 
 TEST_CASE("logic: timers follow the CPU rule: the contact moves when OUT T executes", "[scenario][logic]") {
     // The rung before OUT T0 sees its contact one scan after the rung after it.
-    ScenarioRig rig(program({"LD T0 OUT Y0", "LD SM400 OUT T0 K1", "LD T0 OUT Y1"}));
+    ScenarioRig rig(rung_file({"LD T0 OUT Y0", "LD SM400 OUT T0 K1", "LD T0 OUT Y1"}));
     rig.scan(0);
     rig.scan(100);   // OUT T0 sees the 0 ms collected so far
     CHECK(rig["Y1"] == 0);
@@ -201,7 +201,7 @@ TEST_CASE("logic: timers follow the CPU rule: the contact moves when OUT T execu
 }
 
 TEST_CASE("logic: what only the CPU can tell is refused at start with the rung's pointer", "[scenario][logic][loader]") {
-    CHECK_THROWS_WITH(ScenarioRig(program({"LD X0 OUT Y0", "LD X0 LDPI X1 ORB OUT Y1"}), "Q03UDVCPU"),
+    CHECK_THROWS_WITH(ScenarioRig(rung_file({"LD X0 OUT Y0", "LD X0 LDPI X1 ORB OUT Y1"}), "Q03UDVCPU"),
                       Catch::StartsWith("test.json: /logic/1: 'LDPI' is no instruction of Q03UDVCPU"));
-    CHECK_THROWS_WITH(scenario(program({"LD X0 CALL P0"})), Catch::Contains("/logic/0: 'CALL': unknown instruction in the rung language"));
+    CHECK_THROWS_WITH(scenario(rung_file({"LD X0 CALL P0"})), Catch::Contains("/logic/0: 'CALL': unknown instruction in the rung language"));
 }

@@ -136,13 +136,13 @@ def test_command_line(slmp_sim):
 # presses a start button (M0) over SLMP; 3 s of scans later the motor output
 # is on and the cycle counter counted once.
 CONVEYOR_PROGRAM = """
-;; start button M0 latches the motor request M10, stop button M1 drops it
+;; start button M0 latches the motor request M100, stop button M1 drops it
 LD M0
-OR M10
+OR M100
 ANI M1
-OUT M10
+OUT M100
 ;; the motor starts 3 s after the request (T0, 100 ms base)
-LD M10
+LD M100
 OUT T0 K30
 LD T0
 OUT Y20
