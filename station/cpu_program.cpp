@@ -1,5 +1,6 @@
 #include "station/cpu_program.hpp"
 
+#include <cctype>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -47,11 +48,44 @@ CpuProgram::CpuProgram(devicemodel::Cpu& cpu, config::ProgramConfig config, spdl
 
 CpuProgram::~CpuProgram() { cpu_.runtime().set_observer(nullptr); }
 
+// A timer or counter the program drives must not also be one of the "cpu"
+// section's timers/counters, which the runtime times at END: two owners of one
+// coil measure wrongly (docs/program.md "Timers").
+std::vector<std::string> CpuProgram::shared_coils(const program::Program& compiled) const {
+    using devicemodel::Area;
+    const auto& runtime = cpu_.runtime().config();
+    auto configured = [&](Area area, std::uint32_t number) {
+        for (const auto& t : runtime.timers)
+            if (t.area == area && number >= t.first && number - t.first < t.count) return true;
+        for (const auto& c : runtime.counters)
+            if (c.area == area && number >= c.first && number - c.first < c.count) return true;
+        return false;
+    };
+    std::vector<std::string> problems;
+    const auto& source = program::source_of(compiled);
+    for (const auto& step : program::compiled_steps(compiled)) {
+        if (step.operands.empty() || step.mnemonic.rfind("OUT", 0) != 0) continue;
+        const auto& text = step.operands.front();
+        std::size_t letters = 0;
+        while (letters < text.size() && std::isalpha(static_cast<unsigned char>(text[letters]))) ++letters;
+        auto area = devicemodel::area_by_name(text.substr(0, letters));
+        const auto digits = text.substr(letters);
+        if (!area || digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+        if (configured(*area, static_cast<std::uint32_t>(std::stoul(digits))))
+            problems.push_back(source.file + ": " + (source.format == program::Format::Text ? "line " : "row ") +
+                               std::to_string(step.row) + ": " + text + " is driven by the program and is also in the "
+                               "configuration's cpu.timers/cpu.counters; remove it from one of them");
+    }
+    return problems;
+}
+
 std::shared_ptr<const program::Program> CpuProgram::compile(std::string_view bytes, const std::string& file,
                                                             std::vector<std::string>& warnings) const {
     auto source = program::read_source(bytes, file);
     warnings = source.warnings;
-    return program::compile(source, cpu_.profile(), config_.options, &warnings);
+    auto compiled = program::compile(source, cpu_.profile(), config_.options, &warnings);
+    if (auto problems = shared_coils(*compiled); !problems.empty()) throw program::LoadError(std::move(problems));
+    return compiled;
 }
 
 void CpuProgram::install(std::shared_ptr<const program::Program> compiled, std::vector<std::string> warnings) {

@@ -79,6 +79,7 @@ private:
     void devices_cleared() override;
     void powered_on() override;
     void install(std::shared_ptr<const program::Program> compiled, std::vector<std::string> warnings);
+    std::vector<std::string> shared_coils(const program::Program& compiled) const;
     std::shared_ptr<const program::Program> compile(std::string_view bytes, const std::string& file,
                                                     std::vector<std::string>& warnings) const;
 

@@ -468,6 +468,13 @@ TEST_CASE("program: a program that does not load stops the start with exit code 
     auto check = run_sim({"--check-config", config.string()});
     CHECK(check.exit_code == 2);
     CHECK(check.err.find("'MOVV' is no instruction of R08CPU") != std::string::npos);
+    // A timer both the program and the "cpu" section drive has two owners.
+    dir.write("timer.il", "LD X0\nOUT T0 K20\nEND\n");
+    auto both = dir.write("both.json", R"({"cpu": {"timers": [{"device": "T0", "preset": 20}], "program": {"file": "timer.il"}}})");
+    auto shared = run_sim({"--check-config", both.string()});
+    CHECK(shared.exit_code == 2);
+    CHECK(shared.err.find("timer.il: line 2: T0 is driven by the program and is also in the configuration's "
+                          "cpu.timers/cpu.counters; remove it from one of them") != std::string::npos);
     auto missing = run_sim({"--program", (dir.path() / "nope.csv").string(), "--tcp-port", "0", "--no-http"});
     CHECK(missing.exit_code == 2);
     CHECK(missing.err.find("nope.csv cannot be read") != std::string::npos);
