@@ -51,8 +51,9 @@ std::vector<Form> forms_of(const std::string& example) {
 // drives a CPU: device writes and reads over SLMP.
 class ProgramRig {
 public:
-    ProgramRig(const Form& form, const std::string& profile = "R08CPU", const std::string& program_json = "")
-        : form_(form), sim_(options(form, profile, program_json)) {
+    ProgramRig(const Form& form, const std::string& profile = "R08CPU", const std::string& program_json = "",
+               const std::string& cpu_json = "")
+        : form_(form), sim_(options(form, profile, program_json, cpu_json)) {
         if (form.udp)
             link_ = std::make_unique<UdpLink>(sim_.udp_port());
         else
@@ -103,9 +104,10 @@ public:
     json state() { return http_get(sim_.http_port(), "/api/state").json(); }
 
 private:
-    static SimOptions options(const Form& form, const std::string& profile, const std::string& program_json) {
+    static SimOptions options(const Form& form, const std::string& profile, const std::string& program_json,
+                              const std::string& cpu_json) {
         SimOptions o;
-        o.config_json = R"({"profile": ")" + profile + R"(", "cpu": {"scan_time_ms": 10, "program": {"file": ")" +
+        o.config_json = R"({"profile": ")" + profile + R"(", "cpu": {"scan_time_ms": 10)" + cpu_json + R"(, "program": {"file": ")" +
                         std::string(SLMP_SOURCE_DIR) + "/tests/data/programs/" + form.file + "\"" + program_json + "}}}";
         o.args = {"--clock", "frozen"};
         return o;
@@ -543,4 +545,48 @@ TEST_CASE("program: a snapshot holds the program's timers and edges; restore goe
     rig.scans(1);                   // scan 201: the contact, exactly as without the detour
     CHECK(rig.word("TN0") == 20);
     CHECK(rig.bit("Y0"));
+}
+
+TEST_CASE("program: PAUSE holds the outputs, latch clear and Remote RESET keep the program", "[program]") {
+    ProgramRig rig(forms_of("8_1").front(), "R08CPU", "", R"(, "remote_reset": true)");
+    const auto options = Wire{FrameKind::E3, Codec::Binary, 0}.options();
+    rig.set("X0", true);
+    rig.scans(1);
+    rig.set("X0", false);
+    REQUIRE(rig.bit("Y0"));
+    // PAUSE: the program does not run and Y stay as they are.
+    rig.expect_ok(client::remote_pause(options, client::RemoteMode::Normal));
+    rig.set("X1", true);
+    rig.scans(3);
+    CHECK(rig.bit("Y0"));
+    rig.expect_ok(client::remote_run(options, client::RemoteMode::Normal, client::ClearMode::None));
+    rig.scans(1);
+    CHECK_FALSE(rig.bit("Y0"));   // runs again: the stop button drops the self-hold
+    rig.set("X1", false);
+    // Latch clear (in STOP) clears devices, never the program.
+    rig.expect_ok(client::remote_stop(options));
+    rig.expect_ok(client::remote_latch_clear(options));
+    rig.expect_ok(client::remote_run(options, client::RemoteMode::Normal, client::ClearMode::None));
+    CHECK(rig.program()["state"] == "loaded");
+    rig.set("X0", true);
+    rig.scans(1);
+    CHECK(rig.bit("Y0"));
+    // Remote RESET restarts the CPU (every connection closes); the program is in
+    // program memory and runs again from step 0 with SM402 in scan 1.
+    rig.expect_ok(client::remote_stop(options));
+    {
+        TcpLink reset(rig.sim().tcp_port());
+        CHECK(reset.exchange(client::remote_reset(options)).empty());   // no answer: the CPU restarts, connections close
+    }
+    CHECK(rig.program()["state"] == "loaded");
+    TcpLink after(rig.sim().tcp_port());   // the rig's connection was closed by the RESET
+    auto sm402 = client::parse_response(after.exchange(client::read_bits(options, addr("SM402"), 1)));
+    REQUIRE(sm402);
+    CHECK(sm402->reader().bits(1, "SM402")[0] == 1);
+    const std::vector<std::uint8_t> on{1};
+    REQUIRE(client::parse_response(after.exchange(client::write_bits(options, addr("X0"), on)))->end_code == 0);
+    rig.scans(1);
+    auto y0 = client::parse_response(after.exchange(client::read_bits(options, addr("Y0"), 1)));
+    REQUIRE(y0);
+    CHECK(y0->reader().bits(1, "Y0")[0] == 1);
 }
