@@ -44,6 +44,18 @@ std::optional<long> private_dirty_kib() {
 // A store that trusts calloc for zero pages gets these dirty pages back.
 // Small blocks pinned between the freed ones, freed at the end of the test
 // (LeakSanitizer would report them if they outlived it).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 struct Pins {
     std::vector<void*> blocks;
     ~Pins() {
@@ -102,11 +114,17 @@ TEST_CASE("an idle plant's device memory stays untouched after start and snapsho
               << start_per_station << " after start, +" << snapshot_per_station << " after the initial snapshots ("
               << idle_per_station << " in all); the station with 1000 words written: +" << (after_writes - snapshotted)
               << " KiB\n";
+    CHECK(again.memory_bytes() > 4000);
+    // AddressSanitizer's allocator keeps freed blocks in quarantine (dirty), so
+    // the heap figures say nothing there; the g++ suite checks the bounds.
+    if (kAddressSanitizer) {
+        WARN("AddressSanitizer build: the private dirty bounds are not checked");
+        return;
+    }
     // An R08CPU has ~5 MiB of device memory; an idle station must not pay for
     // it. What an idle station does pay: its objects on the heap, the SM/SD
     // pages the runtime writes at power-on and its (sparse) initial snapshot.
     CHECK(idle_per_station < 96);
     // 1 000 words are 4 KB of values: a few pages and a snapshot of them.
     CHECK(after_writes - snapshotted < 256);
-    CHECK(again.memory_bytes() > 4000);
 }
