@@ -2,12 +2,11 @@
 // POST /api/program/reload: the CPU's PLC program (station/cpu_program.hpp;
 // docs/program.md, docs/api.md "Program"). A program is written and removed
 // in STOP only, as GX Works' "Write to PLC" needs.
-#include <cctype>
-#include <cstdlib>
-
 #include <fmt/format.h>
 
 #include "control/api.hpp"
+#include "devicemodel/device_parts.hpp"
+#include "program/operand_device.hpp"
 #include "station/cpu_program.hpp"
 
 namespace slmp::control {
@@ -95,32 +94,22 @@ json lines_json(const program::Source& source) {
 // timer or counter (its contact and current value). Constants, digit
 // designations and indexed operands have no single device: null.
 json operand_state(const devicemodel::DeviceMemory& memory, devicemodel::Numbering numbering, const std::string& text) {
-    using devicemodel::Area;
-    std::string upper;
-    for (char c : text) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    struct Counter { std::string_view name, contact, value; };
-    static constexpr Counter kTimersAndCounters[] = {{"LST", "LSTS", "LSTN"}, {"LT", "LTS", "LTN"}, {"LC", "LCS", "LCN"},
-                                                     {"ST", "STS", "STN"},    {"T", "TS", "TN"},    {"C", "CS", "CN"}};
-    for (const auto& t : kTimersAndCounters) {
-        if (upper.rfind(t.name, 0) != 0 || upper.size() == t.name.size()) continue;
-        auto digits = upper.substr(t.name.size());
-        if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6) continue;
-        const auto number = static_cast<std::uint32_t>(std::stoul(digits));
-        const auto* contact = devicemodel::find_by_symbol(t.contact);
-        const auto* value = devicemodel::find_by_symbol(t.value);
-        if (number >= memory.size(contact->area)) return nullptr;
-        return {{"on", memory.value(*contact, number)}, {"value", memory.value(*value, number)}};
+    using devicemodel::Part;
+    const auto device = program::operand_device(text, numbering);
+    if (!device || device->number >= memory.size(device->area)) return nullptr;
+    if (!device->spec) {   // "T0": the timer's or counter's contact and current value
+        const auto* contact = devicemodel::find_by_part(device->area, Part::Contact);
+        const auto* value = devicemodel::find_by_part(device->area, Part::Value);
+        if (!contact || !value) return nullptr;
+        return {{"on", memory.value(*contact, device->number)}, {"value", memory.value(*value, device->number)}};
     }
-    auto dot = upper.find('.');
-    auto address = devicemodel::parse_address(upper.substr(0, dot), numbering);
-    if (!address || address->number >= memory.size(address->spec->area)) return nullptr;
-    const auto raw = memory.value(*address->spec, address->number);
-    if (dot != std::string::npos) {
-        const auto bit = std::strtoul(upper.c_str() + dot + 1, nullptr, 16);
-        return {{"on", (raw >> (bit & 15)) & 1u}};
+    const auto raw = memory.value(*device->spec, device->number);
+    if (device->bit >= 0) return {{"on", (raw >> device->bit) & 1u}};
+    switch (device->spec->unit) {
+        case devicemodel::Unit::Bit: return {{"on", raw}};
+        case devicemodel::Unit::Word: return {{"value", static_cast<std::int16_t>(raw)}};
+        case devicemodel::Unit::DoubleWord: break;
     }
-    if (address->spec->unit == devicemodel::Unit::Bit) return {{"on", raw}};
-    if (address->spec->unit == devicemodel::Unit::Word) return {{"value", static_cast<std::int16_t>(raw)}};
     return {{"value", static_cast<std::int32_t>(raw)}};
 }
 

@@ -1,4 +1,5 @@
 #include "devicemodel/device_table.hpp"
+#include "devicemodel/device_parts.hpp"
 
 #include <algorithm>
 #include <array>
@@ -92,6 +93,12 @@ const DeviceSpec* find_by_symbol(std::string_view symbol) {
 const DeviceSpec* find_by_iqr_code(std::uint16_t code) {
     for (const auto& spec : kDevices)
         if (spec.iqr_code == code) return &spec;
+    return nullptr;
+}
+
+const DeviceSpec* find_by_part(Area area, Part part) {
+    for (const auto& spec : all_devices())
+        if (spec.area == area && spec.part == part && !spec.extension_only) return &spec;
     return nullptr;
 }
 

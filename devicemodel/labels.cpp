@@ -1,4 +1,5 @@
 #include "devicemodel/labels.hpp"
+#include "devicemodel/device_parts.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -21,12 +22,6 @@ Area timer_area(TimerKind kind) {
         case TimerKind::LongCounter: return Area::LC;
     }
     return Area::T;
-}
-
-const DeviceSpec* part_of(Area area, Part part) {
-    for (const auto& spec : all_devices())
-        if (spec.area == area && spec.part == part && !spec.extension_only) return &spec;
-    return nullptr;
 }
 
 // R is a window onto ZR: assignments to both must not overlap.
@@ -254,7 +249,7 @@ std::optional<LabelProblem> LabelTable::add_label(LabelDecl decl, const DeviceMe
             if (spec.area != area)
                 return LabelProblem{"a " + std::string(timer_kind_name(label.type.timer)) + " label needs a " +
                                         std::string(area_name(area)) + " device, not " + format_address(*label.device),
-                                    "assign it to e.g. " + std::string(part_of(area, Part::Value)->symbol) + "0"};
+                                    "assign it to e.g. " + std::string(find_by_part(area, Part::Value)->symbol) + "0"};
             count = points;
         } else if (is_bit(label.type)) {
             if (spec.unit != Unit::Bit || spec.part != Part::Plain)
@@ -333,7 +328,7 @@ std::optional<LabelRef> LabelTable::resolve(std::string_view name, std::span<con
         node.at = label->area_offset;
     } else if (label->type.kind == LabelType::Kind::Timer) {
         node.space = Node::Space::TimerDevice;
-        node.spec = part_of(label->device->spec->area, Part::Value);
+        node.spec = find_by_part(label->device->spec->area, Part::Value);
         node.at = label->device->number;
     } else if (is_bit(label->type)) {
         node.space = Node::Space::BitDevice;
@@ -370,7 +365,7 @@ std::optional<LabelRef> LabelTable::resolve(std::string_view name, std::span<con
                 const bool coil = seg.name == "C";
                 ref.basic = BasicType::Bit;
                 if (node.space == Node::Space::TimerDevice)
-                    cell = {LabelCell::Kind::Bit, part_of(area, coil ? Part::Coil : Part::Contact), node.at};
+                    cell = {LabelCell::Kind::Bit, find_by_part(area, coil ? Part::Coil : Part::Contact), node.at};
                 else
                     cell = {LabelCell::Kind::BitInWord, node.spec, (node.at + (wide ? 2 : 1)) * 16 + (coil ? 1 : 0)};
             } else if (seg.name == "N") {

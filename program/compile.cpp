@@ -517,7 +517,7 @@ struct Compiler {
                 step.op[0] = *o;
                 step.operand_count = 1;
                 const bool counter = first->area == Area::C || first->area == Area::LC;
-                step.run = counter ? rst_counter : rst_timer;
+                step.run = rst_timer_counter;
                 if (!counter && o->index == kNoIndex) {
                     auto slot = timer_slots.find({static_cast<int>(o->area), o->number});
                     step.aux = slot == timer_slots.end() ? 0 : slot->second + 1;

@@ -178,7 +178,7 @@ bool Execution::restore_state(const std::vector<std::uint8_t>& bytes) {
     if (edges != state_->edges.size() || timers != state_->accumulators.size()) return false;
     if (bytes.size() != 12 + edges + std::size_t{timers} * 9) return false;
     const auto* p = bytes.data() + 12;
-    std::memcpy(state_->edges.data(), p, edges);
+    std::copy_n(p, edges, state_->edges.begin());   // not memcpy: a program without edges has no buffer
     p += edges;
     for (std::uint32_t i = 0; i < timers; ++i, p += 9) {
         std::memcpy(&state_->accumulators[i], p, 8);

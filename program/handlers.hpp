@@ -19,6 +19,34 @@ namespace slmp::program::detail {
 #define SLMP_FAIL_ON_FAULT \
     if (m.fault) [[unlikely]] return m.raise(m.cause)
 
+// The two shapes most application instructions share, for 16 bits (1 word) or
+// 32 (2 words): sources read, destination checked, then written — so a
+// failing operand writes nothing. `s d`: d = f(s); `s1 s2 d`: d = f(s1, s2).
+template <unsigned Words>
+inline std::int32_t get_wide(Machine& m, const Operand& o) {
+    return Words == 1 ? get16(m, o) : get32(m, o);
+}
+template <unsigned Words>
+inline void put_wide(Machine& m, const Operand& o, std::int32_t v) {
+    if constexpr (Words == 1) put16(m, o, v); else put32(m, o, v);
+}
+template <unsigned Words, class F>
+inline void transform(Machine& m, const Step& s, F f) {
+    SLMP_WHEN_ON;
+    const auto v = get_wide<Words>(m, s.op[0]);
+    probe(m, s.op[1], Words);
+    SLMP_FAIL_ON_FAULT;
+    put_wide<Words>(m, s.op[1], f(v));
+}
+template <unsigned Words, class F>
+inline void combine(Machine& m, const Step& s, F f) {
+    SLMP_WHEN_ON;
+    const auto a = get_wide<Words>(m, s.op[0]), b = get_wide<Words>(m, s.op[1]);
+    probe(m, s.op[2], Words);
+    SLMP_FAIL_ON_FAULT;
+    put_wide<Words>(m, s.op[2], f(a, b));
+}
+
 // P form (spec §5.11, §4.3): the body runs when r went OFF->ON since this step last ran.
 SLMP_HANDLER(pulse);
 
@@ -33,7 +61,7 @@ SLMP_HANDLER(pls); SLMP_HANDLER(plf); SLMP_HANDLER(ff);
 SLMP_HANDLER(mc); SLMP_HANDLER(mcr); SLMP_HANDLER(nop); SLMP_HANDLER(end); SLMP_HANDLER(fend);
 
 // §5.2 timers and counters (instructions_timers.cpp)
-SLMP_HANDLER(out_timer); SLMP_HANDLER(out_counter); SLMP_HANDLER(rst_timer); SLMP_HANDLER(rst_counter);
+SLMP_HANDLER(out_timer); SLMP_HANDLER(out_counter); SLMP_HANDLER(rst_timer_counter);
 
 // §5.3 comparison contacts (instructions_compare.cpp): variant = kind | op << 2 | combine << 5
 SLMP_HANDLER(compare_ld); SLMP_HANDLER(compare_and); SLMP_HANDLER(compare_or);
@@ -115,6 +143,23 @@ inline std::uint32_t block_start(Machine& m, const Operand& o, std::uint64_t cou
     if (m.fault) return 0;
     if (base + count > m.size[static_cast<std::size_t>(o.area)]) m.fail_device();
     return base;
+}
+
+// `d n` block instructions (BKRST, BSFR/BSFL, DSFR/DSFL): n devices from d,
+// range-checked whole and charged `block` a device before any moves. A count
+// of 0 means nothing to do: n <= 0, or an operation error was raised.
+struct Block {
+    std::uint32_t base = 0, count = 0;
+};
+inline Block counted_block(Machine& m, const Operand& d, const Operand& n) {
+    const auto count = get16(m, n);
+    if (m.fault) [[unlikely]] return m.raise(m.cause), Block{};
+    if (count <= 0) return {};
+    const auto points = static_cast<std::uint32_t>(count);
+    const auto base = block_start(m, d, points);
+    if (m.fault) [[unlikely]] return m.raise(m.cause), Block{};
+    m.cost_ps += points * std::uint64_t{m.program->costs.block_ps};
+    return {base, points};
 }
 
 }  // namespace slmp::program::detail

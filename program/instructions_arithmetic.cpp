@@ -18,20 +18,8 @@ std::int32_t sub32w(std::int32_t a, std::int32_t b) {
 }
 }  // namespace
 
-SLMP_HANDLER(add16) {
-    SLMP_WHEN_ON;
-    const auto a = get16(m, s.op[0]), b = get16(m, s.op[1]);
-    probe(m, s.op[2], 1);
-    SLMP_FAIL_ON_FAULT;
-    put16(m, s.op[2], wrap16(a + b));
-}
-SLMP_HANDLER(sub16) {
-    SLMP_WHEN_ON;
-    const auto a = get16(m, s.op[0]), b = get16(m, s.op[1]);
-    probe(m, s.op[2], 1);
-    SLMP_FAIL_ON_FAULT;
-    put16(m, s.op[2], wrap16(a - b));
-}
+SLMP_HANDLER(add16) { combine<1>(m, s, [](std::int32_t a, std::int32_t b) { return wrap16(a + b); }); }
+SLMP_HANDLER(sub16) { combine<1>(m, s, [](std::int32_t a, std::int32_t b) { return wrap16(a - b); }); }
 // 16 x 16 -> 32 bits in d, d+1.
 SLMP_HANDLER(mul16) {
     SLMP_WHEN_ON;
@@ -52,20 +40,8 @@ SLMP_HANDLER(div16) {
     put16(m, s.op[2], quotient);
     if (s.op[2].kind == OperandKind::Word) put16(m, next_word(s.op[2], 1), remainder);
 }
-SLMP_HANDLER(add32) {
-    SLMP_WHEN_ON;
-    const auto a = get32(m, s.op[0]), b = get32(m, s.op[1]);
-    probe(m, s.op[2], 2);
-    SLMP_FAIL_ON_FAULT;
-    put32(m, s.op[2], add32w(a, b));
-}
-SLMP_HANDLER(sub32) {
-    SLMP_WHEN_ON;
-    const auto a = get32(m, s.op[0]), b = get32(m, s.op[1]);
-    probe(m, s.op[2], 2);
-    SLMP_FAIL_ON_FAULT;
-    put32(m, s.op[2], sub32w(a, b));
-}
+SLMP_HANDLER(add32) { combine<2>(m, s, add32w); }
+SLMP_HANDLER(sub32) { combine<2>(m, s, sub32w); }
 // 32 x 32 -> 64 bits in d..d+3, low word first (a digit-designated d gets the low 32 bits).
 SLMP_HANDLER(mul32) {
     SLMP_WHEN_ON;

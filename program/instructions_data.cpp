@@ -47,13 +47,7 @@ SLMP_HANDLER(test32) {
 // BKRST d n: n bits from d OFF.
 SLMP_HANDLER(bkrst) {
     SLMP_WHEN_ON;
-    const auto count = get16(m, s.op[1]);
-    SLMP_FAIL_ON_FAULT;
-    if (count <= 0) return;
-    const auto n = static_cast<std::uint32_t>(count);
-    const auto base = block_start(m, s.op[0], n);
-    SLMP_FAIL_ON_FAULT;
-    m.cost_ps += n * std::uint64_t{m.program->costs.block_ps};
+    const auto [base, n] = counted_block(m, s.op[0], s.op[1]);
     for (std::uint32_t i = 0; i < n; ++i) store_byte(m, s.op[0].plane, s.op[0].area, base + i, false);
 }
 // ZRST d1 d2: bits or words d1..d2 (either order); timers/counters lose value, contact and coil.

@@ -14,19 +14,11 @@ std::uint32_t logic(std::uint8_t variant, std::uint32_t a, std::uint32_t b) {
 }
 }  // namespace
 
-SLMP_HANDLER(logic16) {
-    SLMP_WHEN_ON;
-    const auto a = static_cast<std::uint32_t>(get16(m, s.op[0])), b = static_cast<std::uint32_t>(get16(m, s.op[1]));
-    probe(m, s.op[2], 1);
-    SLMP_FAIL_ON_FAULT;
-    put16(m, s.op[2], static_cast<std::int32_t>(logic(s.variant, a, b) & 0xFFFFu));
-}
-SLMP_HANDLER(logic32) {
-    SLMP_WHEN_ON;
-    const auto a = static_cast<std::uint32_t>(get32(m, s.op[0])), b = static_cast<std::uint32_t>(get32(m, s.op[1]));
-    probe(m, s.op[2], 2);
-    SLMP_FAIL_ON_FAULT;
-    put32(m, s.op[2], static_cast<std::int32_t>(logic(s.variant, a, b)));
-}
+SLMP_HANDLER(logic16) { combine<1>(m, s, [&s](std::int32_t a, std::int32_t b) {
+        return static_cast<std::int32_t>(logic(s.variant, static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)) & 0xFFFFu);
+    }); }
+SLMP_HANDLER(logic32) { combine<2>(m, s, [&s](std::int32_t a, std::int32_t b) {
+        return static_cast<std::int32_t>(logic(s.variant, static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)));
+    }); }
 
 }  // namespace slmp::program::detail

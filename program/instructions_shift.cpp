@@ -85,14 +85,9 @@ SLMP_HANDLER(sft) {
 // BSFR/BSFL d n: n bits from d move one place toward d (R) or away from it (L).
 SLMP_HANDLER(bit_shift) {
     SLMP_WHEN_ON;
-    const auto count = get16(m, s.op[1]);
-    SLMP_FAIL_ON_FAULT;
-    if (count <= 0) return;
-    const auto n = static_cast<std::uint32_t>(count);
     const Operand& d = s.op[0];
-    const auto base = block_start(m, d, n);
-    SLMP_FAIL_ON_FAULT;
-    m.cost_ps += n * std::uint64_t{m.program->costs.block_ps};
+    const auto [base, n] = counted_block(m, d, s.op[1]);
+    if (n == 0) return;
     if (s.variant & 1u) {
         const bool out = block_bit(m, d, base, n - 1);
         for (std::uint32_t i = n - 1; i > 0; --i) set_block_bit(m, d, base, i, block_bit(m, d, base, i - 1));
@@ -109,14 +104,9 @@ SLMP_HANDLER(bit_shift) {
 // DSFR/DSFL d n: n words move one word; the vacated word is 0.
 SLMP_HANDLER(word_shift) {
     SLMP_WHEN_ON;
-    const auto count = get16(m, s.op[1]);
-    SLMP_FAIL_ON_FAULT;
-    if (count <= 0) return;
-    const auto n = static_cast<std::uint32_t>(count);
     const Operand& d = s.op[0];
-    const auto base = block_start(m, d, n);
-    SLMP_FAIL_ON_FAULT;
-    m.cost_ps += n * std::uint64_t{m.program->costs.block_ps};
+    const auto [base, n] = counted_block(m, d, s.op[1]);
+    if (n == 0) return;
     const auto* w = m.words[static_cast<std::size_t>(d.area)];
     if (s.variant & 1u) {
         for (std::uint32_t i = n - 1; i > 0; --i) store_word(m, d.area, base + i, w[base + i - 1]);

@@ -69,9 +69,11 @@ SLMP_HANDLER(out_counter) {
     store_byte(m, Plane::Bits, area, n, value >= static_cast<std::uint64_t>(preset));
 }
 
-// RST T: value 0, contact OFF, accumulator 0; the coil stays, so a coil still
-// ON restarts timing at the next OUT T (rule 5). aux = timer slot + 1, 0: none.
-SLMP_HANDLER(rst_timer) {
+// RST T / RST C: value 0, contact OFF; a timer's accumulator 0 too. The coil
+// stays, so a timer coil still ON restarts timing at the next OUT T (rule 5)
+// and a counter coil still ON counts only after it goes OFF and ON again.
+// aux = timer slot + 1; 0: none (a counter, or a timer no OUT drives).
+SLMP_HANDLER(rst_timer_counter) {
     if (!m.condition()) return;
     const auto area = s.op[0].area;
     const auto n = effective(m, s.op[0], 1);
@@ -81,13 +83,5 @@ SLMP_HANDLER(rst_timer) {
     if (s.aux != 0) m.timer_accumulators[s.aux - 1] = 0;
 }
 
-SLMP_HANDLER(rst_counter) {
-    if (!m.condition()) return;
-    const auto area = s.op[0].area;
-    const auto n = effective(m, s.op[0], 1);
-    if (m.fault) return m.raise(m.cause);
-    store_word(m, area, n, 0);
-    store_byte(m, Plane::Bits, area, n, false);
-}
 
 }  // namespace slmp::program::detail

@@ -4,34 +4,10 @@
 
 namespace slmp::program::detail {
 
-SLMP_HANDLER(mov16) {
-    SLMP_WHEN_ON;
-    const auto v = get16(m, s.op[0]);
-    probe(m, s.op[1], 1);
-    SLMP_FAIL_ON_FAULT;
-    put16(m, s.op[1], v);
-}
-SLMP_HANDLER(mov32) {
-    SLMP_WHEN_ON;
-    const auto v = get32(m, s.op[0]);
-    probe(m, s.op[1], 2);
-    SLMP_FAIL_ON_FAULT;
-    put32(m, s.op[1], v);
-}
-SLMP_HANDLER(cml16) {
-    SLMP_WHEN_ON;
-    const auto v = get16(m, s.op[0]);
-    probe(m, s.op[1], 1);
-    SLMP_FAIL_ON_FAULT;
-    put16(m, s.op[1], ~v);
-}
-SLMP_HANDLER(cml32) {
-    SLMP_WHEN_ON;
-    const auto v = get32(m, s.op[0]);
-    probe(m, s.op[1], 2);
-    SLMP_FAIL_ON_FAULT;
-    put32(m, s.op[1], ~v);
-}
+SLMP_HANDLER(mov16) { transform<1>(m, s, [](std::int32_t v) { return v; }); }
+SLMP_HANDLER(mov32) { transform<2>(m, s, [](std::int32_t v) { return v; }); }
+SLMP_HANDLER(cml16) { transform<1>(m, s, [](std::int32_t v) { return ~v; }); }
+SLMP_HANDLER(cml32) { transform<2>(m, s, [](std::int32_t v) { return ~v; }); }
 // Overlapping blocks behave as if copied through a buffer: the direction follows the addresses.
 SLMP_HANDLER(bmov) {
     SLMP_WHEN_ON;

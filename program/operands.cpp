@@ -2,6 +2,7 @@
 // the one device table, plus the timer/counter names without a part letter,
 // digit designation, bit of a word, index modification and constants.
 #include "program/operands.hpp"
+#include "program/operand_device.hpp"
 
 #include <array>
 #include <cctype>
@@ -222,3 +223,14 @@ std::optional<ParsedOperand> parse_operand(std::string_view raw, devicemodel::Nu
 }
 
 }  // namespace slmp::program::detail
+
+namespace slmp::program {
+
+std::optional<OperandDevice> operand_device(std::string_view text, devicemodel::Numbering numbering) {
+    std::string error;
+    auto parsed = detail::parse_operand(text, numbering, error);
+    if (!parsed || parsed->kind != detail::ParsedOperand::Kind::Device || parsed->index != 0xFF) return std::nullopt;
+    return OperandDevice{parsed->spec, parsed->area, parsed->number, parsed->bit};
+}
+
+}  // namespace slmp::program

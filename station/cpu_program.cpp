@@ -1,6 +1,6 @@
 #include "station/cpu_program.hpp"
 
-#include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -8,6 +8,7 @@
 #include <spdlog/logger.h>
 
 #include "devicemodel/byte_reader.hpp"
+#include "program/operand_device.hpp"
 
 namespace slmp::station {
 
@@ -23,10 +24,7 @@ std::string read_file(const std::string& path, std::string_view what) {
     return bytes.str();
 }
 
-std::string file_name(const std::string& path) {
-    auto slash = path.find_last_of('/');
-    return slash == std::string::npos ? path : path.substr(slash + 1);
-}
+std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 }  // namespace
 
@@ -65,16 +63,11 @@ std::vector<std::string> CpuProgram::shared_coils(const program::Program& compil
     const auto& source = program::source_of(compiled);
     for (const auto& step : program::compiled_steps(compiled)) {
         if (step.operands.empty() || step.mnemonic.rfind("OUT", 0) != 0) continue;
-        const auto& text = step.operands.front();
-        std::size_t letters = 0;
-        while (letters < text.size() && std::isalpha(static_cast<unsigned char>(text[letters]))) ++letters;
-        auto area = devicemodel::area_by_name(text.substr(0, letters));
-        const auto digits = text.substr(letters);
-        if (!area || digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
-        if (configured(*area, static_cast<std::uint32_t>(std::stoul(digits))))
+        const auto coil = program::operand_device(step.operands.front(), cpu_.profile().numbering);
+        if (coil && configured(coil->area, coil->number))
             problems.push_back(source.file + ": " + (source.format == program::Format::Text ? "line " : "row ") +
-                               std::to_string(step.row) + ": " + text + " is driven by the program and is also in the "
-                               "configuration's cpu.timers/cpu.counters; remove it from one of them");
+                               std::to_string(step.row) + ": " + step.operands.front() + " is driven by the program and "
+                               "is also in the configuration's cpu.timers/cpu.counters; remove it from one of them");
     }
     return problems;
 }
