@@ -1,8 +1,8 @@
 #include "control/activity_json.hpp"
 
-#include "control/hex_text.hpp"
 #include "control/request_summary.hpp"
 #include "control/timestamp.hpp"
+#include "devicemodel/hex.hpp"
 #include "scenarios/recording.hpp"
 
 namespace slmp::control {
@@ -44,10 +44,10 @@ json request_json(const station::RequestRecord& record, devicemodel::Numbering n
              {"connection", record.connection},
              {"transport", protocol::to_string(record.peer.transport)},
              {"peer", record.peer.text()},
-             {"command", decoded ? json(hex4(outcome.command)) : json(nullptr)},
-             {"subcommand", decoded ? json(hex4(outcome.subcommand)) : json(nullptr)},
+             {"command", decoded ? json(devicemodel::hex4(outcome.command)) : json(nullptr)},
+             {"subcommand", decoded ? json(devicemodel::hex4(outcome.subcommand)) : json(nullptr)},
              {"name", decoded ? json(std::string(command_name(outcome.command, outcome.subcommand))) : json(nullptr)},
-             {"end_code", outcome.action == Outcome::Action::Respond ? json(hex4(static_cast<std::uint16_t>(outcome.end_code)))
+             {"end_code", outcome.action == Outcome::Action::Respond ? json(devicemodel::hex4(static_cast<std::uint16_t>(outcome.end_code)))
                                                                     : json(nullptr)},
              {"reaction", reaction(outcome.action)},
              {"latency_us", std::chrono::duration<double, std::micro>(record.latency).count()},

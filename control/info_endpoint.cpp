@@ -4,8 +4,8 @@
 #include "config/config.hpp"
 #include "control/api.hpp"
 #include "control/device_waits.hpp"
-#include "control/hex_text.hpp"
 #include "control/timestamp.hpp"
+#include "devicemodel/hex.hpp"
 #include "station/scan_loop.hpp"
 
 namespace slmp::control {
@@ -52,7 +52,7 @@ Reply info(Api& api) {
     return json_reply(json{
         {"version", "0.1.0"},
         {"started", iso_time(api.started)},
-        {"profile", {{"name", profile.name}, {"type_name", profile.type_name}, {"model_code", hex4(profile.model_code)},
+        {"profile", {{"name", profile.name}, {"type_name", profile.type_name}, {"model_code", devicemodel::hex4(profile.model_code)},
                      {"family", config::family_name(profile.family)}}},
         {"device_sizes", std::move(sizes)},
         {"devices", std::move(devices)},

@@ -3,8 +3,8 @@
 
 #include <cstdio>
 
-#include "control/hex_text.hpp"
 #include "devicemodel/drives.hpp"
+#include "devicemodel/hex.hpp"
 
 namespace slmp::control {
 
@@ -122,9 +122,9 @@ std::string Metrics::render() const {
            "(end_code=\"none\": not answered, \"closed\": the connection was closed).");
     for (const auto& [key, count] : requests_) {
         auto [transport, command, subcommand, reaction] = key;
-        auto code = reaction == kNoAnswer ? std::string("none") : reaction == kClosed ? std::string("closed") : hex4(reaction);
+        auto code = reaction == kNoAnswer ? std::string("none") : reaction == kClosed ? std::string("closed") : devicemodel::hex4(reaction);
         out += "slmp_requests_total{transport=\"" + std::string(kTransportNames[transport]) + "\",command=\"" +
-               hex4(command) + "\",subcommand=\"" + hex4(subcommand) + "\",end_code=\"" + code + "\"} " +
+               devicemodel::hex4(command) + "\",subcommand=\"" + devicemodel::hex4(subcommand) + "\",end_code=\"" + code + "\"} " +
                std::to_string(count) + "\n";
     }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "devicemodel/hex.hpp"
+
 namespace slmp::control {
 namespace {
 
@@ -24,13 +26,6 @@ std::vector<std::string> segments_of(std::string_view path) {
     return segments;
 }
 
-int hex_digit(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-}
-
 std::string join(const std::vector<std::string>& items) {
     std::string text;
     for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
@@ -45,8 +40,8 @@ bool percent_decode(std::string_view text, bool query, std::string* out) {
         char c = text[i];
         if (c == '%') {
             if (i + 2 >= text.size()) return false;
-            int high = hex_digit(text[i + 1]);
-            int low = hex_digit(text[i + 2]);
+            int high = devicemodel::hex_digit(text[i + 1]);
+            int low = devicemodel::hex_digit(text[i + 2]);
             if (high < 0 || low < 0) return false;
             *out += static_cast<char>(high * 16 + low);
             i += 2;

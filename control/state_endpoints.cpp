@@ -6,7 +6,7 @@
 // Behaviour of the state machine: docs/cpu-runtime.md.
 #include "control/api.hpp"
 #include "control/event_hub.hpp"
-#include "control/hex_text.hpp"
+#include "devicemodel/hex.hpp"
 
 namespace slmp::control {
 
@@ -48,7 +48,7 @@ json state_json(const devicemodel::Runtime& runtime) {
         out["remote_hold"] = {{"kind", s.hold().kind == OperatingState::Hold::Kind::Stop ? "STOP" : "PAUSE"},
                               {"connection", s.hold().owner}};
     if (s.error()) {
-        out["error"] = {{"code", hex4(s.error()->code)}, {"stop", s.error()->stop}};
+        out["error"] = {{"code", devicemodel::hex4(s.error()->code)}, {"stop", s.error()->stop}};
     }
     return out;
 }

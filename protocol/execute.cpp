@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
+#include "devicemodel/hex.hpp"
 #include "protocol/command_table.hpp"
 #include "protocol/engine.hpp"
 #include "protocol/frame_1e.hpp"
-#include "protocol/hex.hpp"
 #include "protocol/reply.hpp"
 
 namespace slmp::protocol {
@@ -50,8 +50,8 @@ Outcome bad_header(const Request& request, Reply& reply) {
 }
 
 std::string route_note(const Route& route) {
-    return "request for network " + hex_text(route.network, 2) + " station " + hex_text(route.station, 2) +
-           " module I/O " + hex4(route.module_io) + " multidrop " + hex_text(route.multidrop, 2) +
+    return "request for network " + devicemodel::hex_text(route.network, 2) + " station " + devicemodel::hex_text(route.station, 2) +
+           " module I/O " + devicemodel::hex4(route.module_io) + " multidrop " + devicemodel::hex_text(route.multidrop, 2) +
            "; only the own station (00/FF, or the port's own network/station numbers, module I/O 03FF, multidrop 00) and its configured CPUs (module I/O 03E0-03E3) are served";
 }
 
@@ -73,11 +73,11 @@ std::optional<Outcome> port_refusal(const devicemodel::CpuProfile& cpu, const Po
     if ((row && !row->served_by(cpu.family)) ||
         std::find(extra.begin(), extra.end(), request.command) != extra.end())
         return reply.error(end_code(profile.not_supported_code),
-                           "command " + hex4(request.command) + " is not supported by " + cpu.name);
+                           "command " + devicemodel::hex4(request.command) + " is not supported by " + cpu.name);
     const auto form = request.subcommand & 0xFF7F;   // 008x: the same forms with the extension specification
     if (row && row->device_command() && (form == 0x0002 || form == 0x0003) &&
         profile.iqr_subcommands.kind != Refusal::Kind::Serve)
-        return reply.refuse(profile.iqr_subcommands, hex4(request.command) + "/" + hex4(request.subcommand) +
+        return reply.refuse(profile.iqr_subcommands, devicemodel::hex4(request.command) + "/" + devicemodel::hex4(request.subcommand) +
                                                          " uses the iQ-R device form, which " + cpu.name +
                                                          " does not accept");
     return std::nullopt;
@@ -143,8 +143,8 @@ Outcome Engine::execute(const Request& request, Session& session) {
     if (!spec)
         return reply.error(end_code(profile.not_supported_code),
                            find_any_row(request.command)
-                               ? "unknown subcommand " + hex4(request.subcommand) + " for command " + hex4(request.command)
-                               : "unknown or unimplemented command " + hex4(request.command));
+                               ? "unknown subcommand " + devicemodel::hex4(request.subcommand) + " for command " + devicemodel::hex4(request.command)
+                               : "unknown or unimplemented command " + devicemodel::hex4(request.command));
     auto& target = *cpus_[request.target];
     if (spec->control_cpu_only() && request.target != 0)
         return reply.error(end_code(profile.not_supported_code),
