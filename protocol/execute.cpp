@@ -55,7 +55,7 @@ std::string route_note(const Route& route) {
            "; only the own station (00/FF, or the port's own network/station numbers, module I/O 03FF, multidrop 00) and its configured CPUs (module I/O 03E0-03E3) are served";
 }
 
-// Remote password (slmp-labels-remote-misc.md §6): a locked connection gets
+// Remote password (SLMP Reference Manual §5.7): a locked connection gets
 // C201 for everything but the rows that are exempt (Unlock 1630, Lock 1631).
 bool locked_out(const devicemodel::Cpu& cpu, const Session& session, std::uint16_t command) {
     if (!password_guards(cpu, session) || session.password_unlocked) return false;
@@ -100,7 +100,7 @@ std::optional<Outcome> protection_refusal(const devicemodel::Cpu& cpu, const Por
     return std::nullopt;
 }
 
-// Commands per connection (spec §2.3): 1 + buffer ÷ connections requests fit
+// Commands per connection (SLMP Reference Manual §3.3): 1 + buffer ÷ connections requests fit
 // in the port's receive buffer, fractions truncated; one more is refused as
 // the profile says (CEE0 by default, docs/end-codes.md).
 std::optional<Outcome> over_pipeline_limit(const PortProfile& profile, const Session& session, Reply& reply) {

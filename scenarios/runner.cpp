@@ -72,7 +72,7 @@ void ScenarioRunner::scan(TimePoint now) {
     if (!powered_ && now_ms_ >= power_on_at_) {
         powered_ = true;
         cpu_.runtime().restart(memory);   // non-latched devices cleared, state from the switch
-        cpu_.drives().clear_locks();      // file locks do not survive a power cycle (slmp-files.md §4.8)
+        cpu_.drives().clear_locks();      // file locks do not survive a power cycle (SLMP Reference Manual §5.8)
         for (auto& l : logic_) l->stopped();
         if (station_) station_->power_on();
         info("power restored: the CPU restarted");

@@ -129,7 +129,7 @@ Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodeP
     return handled;
 }
 
-// Remote RESET (slmp-labels-remote-misc.md §5.6): the CPU has restarted; as on
+// Remote RESET (SLMP Reference Manual §5.6): the CPU has restarted; as on
 // the real station every TCP connection drops and UDP sessions start afresh.
 void Station::restart() {
     log_->info("Remote RESET: CPU restarted; closing every connection");

@@ -9,7 +9,7 @@ namespace slmp::bench::baseline {
 namespace {
 
 // Where a frame's request data length field sits and what follows it
-// (../shared/spec/slmp-frames-and-devices.md §3.1–§3.3).
+// (SLMP Reference Manual ch. 4).
 struct Layout {
     bool ascii;
     std::size_t length_at;   // the request data length field
