@@ -141,6 +141,8 @@ def scan(path, check_paths):
         if not check_paths:
             continue
         for token in REPO_PATH.findall(line):
+            if "node_modules/" in token:   # npm fills these (scripts/setup.sh); not part of a checkout
+                continue
             if not exists(token):
                 report(path, n, f"names '{token}', which does not exist", "point it at the file that holds it now")
         if line.lstrip().startswith("#include"):   # the compiler checks these
