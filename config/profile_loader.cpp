@@ -109,7 +109,7 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
     }
     if (root.has("station_extended_frame")) port.station_extended_frame = root["station_extended_frame"].boolean();
     if (root.has("timing")) profile.timing = parse_timing_model(root["timing"], profile.timing);
-    if (root.has("pipeline")) {   // {"buffer": 32, "over_limit": "CEE0"}: 1 + buffer ÷ connections (spec §2.3)
+    if (root.has("pipeline")) {   // {"buffer": 32, "over_limit": "CEE0"}: 1 + buffer ÷ connections (SLMP Reference Manual §3.3)
         auto pipeline = root["pipeline"];
         pipeline.only_keys({"buffer", "over_limit"});
         port.pipeline_buffer = static_cast<std::uint32_t>(pipeline["buffer"].unsigned_int(65535));

@@ -23,7 +23,7 @@ TimingMode parse_timing_mode(const std::string& text, const std::string& where);
 // Ke: the fixed part of one request; Kdt: per word of device data, so the
 // ASCII code, which moves each word as four characters, costs more.
 struct TimingModel {
-    double ke_binary_ms = 3.9;       // R08CPU: 4.4 ms measured (hardware-behaviour.md §8) - mean scan wait at 1 ms scan
+    double ke_binary_ms = 3.9;       // R08CPU: 4.4 ms measured (real-CPU measurements) - mean scan wait at 1 ms scan
     double ke_ascii_ms = 3.9;        // inferred: the same fixed cost; ASCII shows in Kdt
     double kdt_binary_ms = 0.003;    // FX5 / NZ2GF-ETB manuals' Kdt, binary (issue 13)
     double kdt_ascii_ms = 0.0045;    // the same manuals, ASCII

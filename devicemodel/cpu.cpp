@@ -52,7 +52,7 @@ bool Cpu::in_range(Area area, std::uint64_t start, std::uint64_t count) const {
 }
 
 // Clients build their address catalogues from these registers
-// (hardware-behaviour.md §6), so they must always match the configured sizes.
+// (real-CPU measurements), so they must always match the configured sizes.
 void Cpu::publish_device_sizes() {
     const auto* sd = find_by_symbol("SD");
     for (const auto& reg : profile_.size_registers) {

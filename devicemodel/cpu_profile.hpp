@@ -2,7 +2,7 @@
 // identity, family, device sizes, the special registers that publish them and
 // its remote password rule — as plain data. What its SLMP port answers is
 // protocol::PortProfile; both come from one file (config/profiles/*.json).
-// Facts: ../shared/spec/hardware-behaviour.md §5, §6.
+// Facts: real-CPU measurements.
 #pragma once
 
 #include <array>
@@ -40,7 +40,7 @@ struct CpuProfile {
     // this many words; 0 = the CPU buffer memory (area G of the CPU).
     std::uint32_t station_buffer_words = 0;
 
-    // Remote password length rule (slmp-labels-remote-misc.md §6): Q/L exactly 4
+    // Remote password length rule (SLMP Reference Manual §5.7): Q/L exactly 4
     // characters, iQ-R 6-32. 0/0: the port has no remote password (1630/1631 -> C059).
     std::uint8_t password_min_length = 0;
     std::uint8_t password_max_length = 0;

@@ -37,7 +37,7 @@ class DeviceMemory {
 public:
     // `slack_words` extra words are kept behind R/ZR so that iQ-R's start-only
     // range check can read and write past the configured end without touching
-    // another area (hardware-behaviour.md §6: ZR163839 ×64 succeeds).
+    // another area (real-CPU measurements: ZR163839 ×64 succeeds).
     explicit DeviceMemory(const DeviceSizes& sizes, std::uint32_t slack_words = 1024);
     // A copy holds the same values and costs RAM only for the pages that hold
     // something (zero_page_arena.hpp); the observer pointer is copied too.

@@ -15,7 +15,7 @@ using enum Unit;
 using enum Radix;
 
 // ZR: both manual editions mark it hexadecimal, but iQ-R CPUs and GX Works number
-// it in decimal (hardware-behaviour.md §7); decimal is the default here and a
+// it in decimal (real-CPU measurements); decimal is the default here and a
 // profile may switch its ASCII wire form to hex.
 constexpr std::array kDevices = {
     DeviceSpec{"SM", 0x0091, 0x91, "SM", SM, Plain, Bit, Dec, "special relay"},

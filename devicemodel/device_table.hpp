@@ -1,6 +1,6 @@
 // The one device table: every MELSEC device a client can name, with its codes
 // for both subcommand families, its ASCII names, its unit and its numbering.
-// Source: ../shared/spec/slmp-frames-and-devices.md §5.2 (CN §5.2, JP cross-check).
+// Source: SLMP Reference Manual §5.2 (CN §5.2, JP cross-check).
 //
 // This file knows nothing about frames: the codes are plain numbers and the
 // names plain text, so the SLMP codec, the config parser, the CLI and the
@@ -45,7 +45,7 @@ struct DeviceSpec {
     std::string_view name;       // English name, for messages and docs
     // G and HG exist only behind an extension (module access U1 G10, CPU buffer
     // U3E0 G10 / HG10; subcommands 008x): named as plain devices they answer C05B
-    // (hardware-behaviour.md §7).
+    // (real-CPU measurements).
     bool extension_only = false;
 };
 

@@ -1,5 +1,5 @@
 // The CPU's file drives (SLMP 1810-182A act on them; this file knows no SLMP).
-// Model: ../shared/spec/slmp-files.md §8. A drive has a kind, a capacity, a
+// Model: SLMP Reference Manual §5.8. A drive has a kind, a capacity, a
 // present flag and a write-protect flag (the SD card's LOCK switch), and keeps
 // its files in a FileStore (a host folder or memory). Each directory is an
 // array of slots: file No. = 1-based slot, a deleted entry leaves a tombstone

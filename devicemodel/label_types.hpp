@@ -2,7 +2,7 @@
 // timer/counter family (structures with members S, C, N), user-defined
 // structures, and their names as GX Works3 writes them (with the IEC short
 // names as aliases). Sizes are in 16-bit words of the store a label lives in.
-// Source: ../shared/spec/slmp-labels-remote-misc.md §2.3–§2.6, §2.10.
+// Source: SLMP Reference Manual §5.3.
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,6 @@
 #include "devicemodel/labels.hpp"
 #include "devicemodel/device_parts.hpp"
+#include "devicemodel/hex.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -57,11 +58,8 @@ std::optional<std::uint32_t> index_number(std::string_view s) {
     if (s.empty() || s.size() > 8) return std::nullopt;
     std::uint32_t v = 0;
     for (char c : s) {
-        unsigned d = c >= '0' && c <= '9' ? unsigned(c - '0')
-                     : base == 16 && c >= 'A' && c <= 'F' ? unsigned(c - 'A' + 10)
-                     : base == 16 && c >= 'a' && c <= 'f' ? unsigned(c - 'a' + 10)
-                                                          : 99;
-        if (d >= base) return std::nullopt;   // BBB[XXX]: a variable is not an element number
+        int d = hex_digit(static_cast<unsigned char>(c));
+        if (d < 0 || unsigned(d) >= base) return std::nullopt;   // BBB[XXX]: a variable is not an element number
         v = v * base + d;
     }
     return v;
@@ -266,7 +264,7 @@ std::optional<LabelProblem> LabelTable::add_label(LabelDecl decl, const DeviceMe
                     if (m.type.kind != LabelType::Kind::Basic)
                         return LabelProblem{"structure '" + label.type.structure->name + "' has member '" + m.name +
                                                 "' of a structure or timer type, and such a label cannot be "
-                                                "assigned to a device (slmp-labels-remote-misc.md §2.3)",
+                                                "assigned to a device (slmp-labels-remote-misc.md §2.3)",   // signposts: allow (a message users see, kept as it is)
                                             "remove \"device\" to place the label in the label area"};
             count = label.words;
         }

@@ -4,7 +4,7 @@
 // device's data: writing the label and reading D1000 agree) or lives in the
 // label area of DeviceMemory, which snapshots save with the devices.
 // Knows no wire protocol; the SLMP commands are protocol/commands/labels.cpp.
-// Source: ../shared/spec/slmp-labels-remote-misc.md §2.
+// Source: SLMP Reference Manual §5.3.
 //
 // Layout in a word store (the label area, or a word device such as D):
 //   basic types: basic_words() words, 32/64-bit values low word first;

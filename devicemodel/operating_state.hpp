@@ -2,7 +2,7 @@
 // switch, the remote STOP/PAUSE held by one client, and a simulated CPU error.
 // Pure: no time, no memory, no protocol — every decision is a table row.
 //
-// Model (slmp-labels-remote-misc.md §0 and §5.8, precedence inferred there):
+// Model (SLMP Reference Manual §5.6, precedence inferred there):
 //   stop error             -> STOP (cause: error)
 //   switch at STOP         -> STOP (cause: switch)
 //   remote STOP held       -> STOP (cause: remote)
@@ -18,7 +18,7 @@
 
 namespace slmp::devicemodel {
 
-// SD203 low nibble (hardware-behaviour.md §6).
+// SD203 low nibble (real-CPU measurements).
 enum class RunState : std::uint8_t { Run = 0, Stop = 2, Pause = 3 };
 // SD203 bits 4-7: why the CPU is in STOP/PAUSE (iQ-R/Q "STOP/PAUSE cause").
 // Instruction: the program's STOP instruction (3, inferred; docs/program.md).

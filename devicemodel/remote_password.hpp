@@ -1,4 +1,4 @@
-// The CPU's remote password (slmp-labels-remote-misc.md §6): the configured
+// The CPU's remote password (SLMP Reference Manual §5.7): the configured
 // text, and the count of wrong Unlock/Lock attempts that triggers a lock-out
 // for a period. Per CPU, not per connection, so reconnecting does not reset the
 // count (§15.8 leaves count and period open: both are configuration).

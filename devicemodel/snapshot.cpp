@@ -32,23 +32,6 @@ bool saved(Area area, SnapshotContents contents) {
     return contents == SnapshotContents::WithSystem || (area != Area::SM && area != Area::SD);
 }
 
-class Writer {
-public:
-    void u8(std::uint8_t v) { out.push_back(v); }
-    void u32(std::uint32_t v) {
-        for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-    }
-    void u64(std::uint64_t v) {
-        for (int i = 0; i < 8; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-    }
-    void name(std::string_view s) {
-        u8(static_cast<std::uint8_t>(s.size()));
-        out.insert(out.end(), s.begin(), s.end());
-    }
-    std::vector<std::uint8_t> out;
-};
-
-
 // How many values from `from` are zero: 64 at a time with memcmp (vectorised)
 // while it can, as most of a station's memory is.
 std::size_t zeros_from(std::span<const std::uint32_t> values, std::size_t from) {
@@ -65,7 +48,7 @@ std::size_t zeros_from(std::span<const std::uint32_t> values, std::size_t from) 
 // untouched rest is a count (DeviceMemory::possibly_nonzero).
 class RunEncoder {
 public:
-    explicit RunEncoder(Writer& w) : w_(w) {}
+    explicit RunEncoder(ByteWriter& w) : w_(w) {}
     void zeros(std::size_t n) {
         if (n == 0) return;
         if (literals_ > 0) close_literals();
@@ -98,12 +81,12 @@ private:
         w_.u32(v);
     }
     void close_literals() {
-        for (int i = 0; i < 4; ++i) w_.out[count_at_ + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(literals_ >> (8 * i));
+        w_.u32_at(count_at_, literals_);
         literals_ = 0;
         zeros_ = 0;
     }
 
-    Writer& w_;
+    ByteWriter& w_;
     std::size_t zeros_ = 0;
     std::uint32_t literals_ = 0;
     std::size_t count_at_ = 0;
@@ -112,7 +95,7 @@ private:
 // One part of the memory, devices [0, size): only the devices that may be
 // non-zero are read, in pieces of a thread's reused buffer (a buffer of the
 // whole part would cost its pages again for every station of a plant).
-void encode_part(Writer& w, const DeviceMemory& memory, const DeviceSpec& part, std::uint32_t size) {
+void encode_part(ByteWriter& w, const DeviceMemory& memory, const DeviceSpec& part, std::uint32_t size) {
     thread_local std::vector<std::uint32_t> buffer(4096);
     RunEncoder runs(w);
     std::uint32_t at = 0;
@@ -211,7 +194,7 @@ struct SavedArea {
 
 std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::string_view profile_name,
                                           SnapshotContents contents) {
-    Writer w;
+    ByteWriter w;
     w.out.insert(w.out.end(), std::begin(kMagic), std::end(kMagic));
     w.u32(kVersion);
     w.name(profile_name);
@@ -255,8 +238,7 @@ RestoreResult restore_snapshot(std::span<const std::uint8_t> bytes, DeviceMemory
     };
     if (bytes.size() < sizeof kMagic + 12 || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
         return fail("not a slmp-sim snapshot (bad magic)");
-    std::uint64_t stored = 0;
-    for (int i = 0; i < 8; ++i) stored |= std::uint64_t{bytes[bytes.size() - 8 + static_cast<std::size_t>(i)]} << (8 * i);
+    auto stored = *ByteReader(bytes.last(8)).u64();
     auto body = bytes.first(bytes.size() - 8);
     if (fnv1a(body) != stored) return fail("checksum mismatch (the file is damaged)");
 

@@ -2,7 +2,7 @@
 // server's). A snapshot holds every stored device except SM/SD (the system
 // rebuilds those; SnapshotContents::WithSystem keeps them too) and ends with a checksum, so a damaged file is recognised
 // and refused rather than half-loaded. Remote-operation state is not saved: a
-// power cycle erases it on the real CPU (slmp-labels-remote-misc.md §5.1).
+// power cycle erases it on the real CPU (SLMP Reference Manual §5.6).
 //
 // Layout (all integers little-endian):
 //   "SLMPSNAP" u32 version(1) | u8 n + profile name | u32 areas

@@ -1,4 +1,4 @@
-// Label names travel as UTF-16 code units (slmp-labels-remote-misc.md §2.2);
+// Label names travel as UTF-16 code units (SLMP Reference Manual §5.3);
 // the rest of slmp-sim keeps text as UTF-8. These two convert, for the label
 // handlers and the client encoder. Invalid input becomes U+FFFD, which no
 // label name contains, so a garbled name simply does not resolve.

@@ -1,5 +1,5 @@
 // compile(): Source lines into the flat step array (docs/program.md "Engine",
-// "Load errors"; spec §3.1, §4.4, §5, §9). Every problem is collected, one
+// "Load errors", "Instructions", "The scan"). Every problem is collected, one
 // line each, and thrown together as LoadError.
 #include <algorithm>
 #include <map>
@@ -26,7 +26,7 @@ std::string upper(std::string_view text) {
 
 constexpr std::uint16_t kScratchSlot = 63;   // a rung start writes its covered value here
 constexpr int kMaxOpenBlocks = 62;
-constexpr int kMaxBranches = 16;             // MPS depth (spec §5.1, inferred)
+constexpr int kMaxBranches = 16;             // MPS depth (docs/program.md "Instructions", inferred)
 
 struct Compiler {
     Compiler(const Source& s, const devicemodel::CpuProfile& p, const ProgramOptions& o, const devicemodel::LabelTable* l)
@@ -43,7 +43,7 @@ struct Compiler {
     std::map<std::int64_t, std::pair<std::uint32_t, std::size_t>> labels;
     std::size_t fend_index = SIZE_MAX;   // first FEND: the main routine ends there
 
-    // rung structure (spec §3.1)
+    // rung structure (docs/program.md "Instructions")
     int open = 0;
     bool after_output = false;
     int branches = 0;
@@ -51,7 +51,7 @@ struct Compiler {
     // MC levels open, with their lines; FOR lines open
     std::vector<std::pair<std::uint32_t, std::size_t>> mc_levels;
     std::vector<std::size_t> for_lines;
-    // double coils (spec §4.4)
+    // double coils (docs/program.md "The scan")
     std::map<std::tuple<int, int, std::uint32_t, int>, std::size_t> bit_coils;
     std::map<std::pair<int, std::uint32_t>, std::size_t> timer_coils;
     std::map<std::pair<int, std::uint32_t>, std::uint32_t> timer_slots;
@@ -497,7 +497,7 @@ struct Compiler {
         step.variant = info->variant;
         const std::size_t index = program->steps.size();
 
-        // OUT/OUTH/OUTHS and RST of timers and counters, RST of words: by operand (spec §5.1, §5.2).
+        // OUT/OUTH/OUTHS and RST of timers and counters, RST of words: by operand (docs/program.md "Instructions").
         std::string ignored;
         std::optional<ParsedOperand> first;
         if (!operands.empty()) first = parse_operand(operands[0], profile.numbering, ignored);
@@ -649,7 +649,7 @@ struct Compiler {
         std::uint64_t base_us = std::uint64_t{options.timer_low_ms} * 1000;
         if (mnemonic == "OUTH") base_us = std::uint64_t{options.timer_high_ms} * 1000;
         if (mnemonic == "OUTHS") base_us = 1000;
-        if (wide) base_us = 1;   // LT/LST count µs (spec §4.1)
+        if (wide) base_us = 1;   // LT/LST count µs (docs/program.md "Timers")
         step.aux = static_cast<std::uint32_t>(std::max<std::uint64_t>(base_us, 1));
         auto [slot, added] = timer_slots.emplace(key, static_cast<std::uint32_t>(program->timers.size()));
         if (added) program->timers.push_back(TimerSlot{area, first->number});

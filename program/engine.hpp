@@ -29,15 +29,15 @@ namespace slmp::program::detail {
 using devicemodel::Area;
 constexpr std::size_t kAreas = static_cast<std::size_t>(Area::Count);
 
-// Cost classes of docs/program.md "Modelled time" (spec §6.2).
+// Cost classes of docs/program.md "Modelled time".
 enum class Cost : std::uint8_t { Basic, Move, Arith, Float, Block, Label };
 
-// Families an instruction exists in (spec §5.12).
+// Families an instruction exists in (docs/program.md "Instructions").
 enum FamilyBits : std::uint8_t { QL = 1, IQR = 2, IQF = 4, ALL = QL | IQR | IQF };
 std::uint8_t family_bit(devicemodel::Family family);
 std::string_view family_name(devicemodel::Family family);
 
-// Causes of operation errors (spec §3.5); codes per family in error_code().
+// Causes of operation errors (docs/program.md "Operation errors"); codes per family in error_code().
 enum class Cause : std::uint8_t {
     None, DivideByZero, Range, Device, Float, CallNest, ReturnWithoutCall, ForNest, NextWithoutFor,
     BreakWithoutFor, Watchdog
@@ -89,8 +89,8 @@ using Handler = void (*)(Machine&, const Step&);
 struct Step {
     Handler run = nullptr;
     Handler body = nullptr;       // the instruction itself, for the P-form and condition wrappers
-    std::uint32_t cost_ps = 0;    // modelled cost in picoseconds (spec §6.2)
-    std::uint32_t edge = 0;       // edge-memory slot (spec §4.3) or timer slot
+    std::uint32_t cost_ps = 0;    // modelled cost in picoseconds (docs/program.md "Modelled time")
+    std::uint32_t edge = 0;       // edge-memory slot (docs/program.md "The scan") or timer slot
     std::uint32_t aux = 0;        // handler-specific: timer base in µs, jump target ...
     std::uint16_t slot = 0;       // static result-stack / branch-stack slot
     std::uint8_t operand_count = 0;
@@ -175,7 +175,7 @@ struct Machine {
     // Ends the loop: the scan loop's one check (cost > limit | executed > max) fires.
     void halt_now(Halt why) { halt = why; limit_ps = 0; max_steps = 0; }
     std::uint64_t wdt_limit() const { return limit_ps; }
-    // An operation error at the step being executed (spec §3.5).
+    // An operation error at the step being executed (docs/program.md "Operation errors").
     void raise(Cause why);
     void fail_device() { fault = true; cause = Cause::Device; }
     std::uint32_t m_size(Area area) const { return size[static_cast<std::size_t>(area)]; }
@@ -268,7 +268,7 @@ inline void scatter_digits(Machine& m, const Operand& o, std::uint32_t v) {
     for (unsigned i = 0, bits = o.digits * 4u; i < bits; ++i) store_byte(m, o.plane, o.area, n + i, (v >> i) & 1u);
 }
 
-// 16-bit source: sign-extended, except digit designation (zero-extended, spec §2.6).
+// 16-bit source: sign-extended, except digit designation (zero-extended, docs/program.md "Operands").
 inline std::int32_t get16(Machine& m, const Operand& o) {
     switch (o.kind) {
         case OperandKind::Constant:

@@ -1,5 +1,5 @@
-// Execution: one CPU running one program (docs/program.md "Engine"; spec §3,
-// §4.1). The scan loop below is the only place that walks the steps.
+// Execution: one CPU running one program (docs/program.md "Engine", "The
+// scan"). The scan loop below is the only place that walks the steps.
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
@@ -34,7 +34,7 @@ void Machine::raise(Cause why) {
         halt_now(Halt::StopError);
         return;
     }
-    // Continue (spec §3.5): SM0 = SM1 = 1 (SM56 on Q/L), SD0 = code; the step wrote nothing.
+    // Continue (docs/program.md "Operation errors"): SM0 = SM1 = 1 (SM56 on Q/L), SD0 = code; the step wrote nothing.
     const auto sm = m_size(Area::SM);
     if (sm > 1) {
         store_byte(*this, Plane::Bits, Area::SM, 0, true);

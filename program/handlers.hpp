@@ -1,4 +1,4 @@
-// Every instruction handler, by group (one instructions_*.cpp per spec §5
+// Every instruction handler, by group (one instructions_*.cpp per docs/program.md "Instructions"
 // table). Application handlers test the operation result themselves
 // (`if (!m.condition()) return;`) so a step costs one indirect call; their P
 // forms run through `pulse`, which tests the edge and then calls the body.
@@ -12,7 +12,7 @@
 namespace slmp::program::detail {
 
 #define SLMP_HANDLER(name) void name(Machine& m, const Step& s)
-// An application instruction does nothing while r is OFF (spec §5).
+// An application instruction does nothing while r is OFF (docs/program.md "Instructions").
 #define SLMP_WHEN_ON \
     if (!m.condition()) return
 // An operand that could not be resolved (index past the end): the error, nothing written.
@@ -47,7 +47,7 @@ inline void combine(Machine& m, const Step& s, F f) {
     put_wide<Words>(m, s.op[2], f(a, b));
 }
 
-// P form (spec §5.11, §4.3): the body runs when r went OFF->ON since this step last ran.
+// P form (docs/program.md "Instructions", "The scan"): the body runs when r went OFF->ON since this step last ran.
 SLMP_HANDLER(pulse);
 
 // §5.1 sequence (instructions_sequence.cpp)
@@ -104,7 +104,7 @@ SLMP_HANDLER(stop);
 // The fast form of `general` for this step's operands, or `general` (fast_paths.cpp).
 Handler specialised(Handler general, const Step& step);
 
-// Floats (spec §3.5 float): -0, denormals, NaN and infinities are refused as operands.
+// Floats (docs/program.md "Operation errors" float): -0, denormals, NaN and infinities are refused as operands.
 inline bool bad_float(float f) {
     const int c = std::fpclassify(f);
     return c == FP_NAN || c == FP_INFINITE || c == FP_SUBNORMAL || (c == FP_ZERO && std::signbit(f));

@@ -1,4 +1,4 @@
-// The instruction table (docs/program.md "Instructions"; spec §5). One row per
+// The instruction table (docs/program.md "Instructions"). One row per
 // mnemonic as the CPU names it; the P forms of §5.11 are the rows with
 // pulse_form set (the compiler strips the trailing P only for those, so LDP,
 // MPP, NOP, STOP and OUTHS stay instructions of their own).
@@ -27,7 +27,7 @@ constexpr InstructionInfo two_or_three(std::string_view mnemonic, Cost cost, std
     return {mnemonic, Role::Output, cost, ALL, true, false, true, 2,
             {Form{short_types, "s d"}, Form{long_types, "s1 s2 d"}}, handler, "", variant};
 }
-// An FX name of iQ-F (spec §5.4, §5.12): elsewhere the load error names the Q instruction.
+// An FX name of iQ-F (docs/program.md "Instructions"): elsewhere the load error names the Q instruction.
 constexpr InstructionInfo fx(std::string_view mnemonic, Cost cost, Form form, Handler handler, std::string_view q_name,
                              std::uint8_t variant = 0) {
     return {mnemonic, Role::Output, cost, IQF, true, false, false, 1, {form, none}, handler, q_name, variant};
@@ -264,11 +264,11 @@ std::optional<InstructionShape> instruction_shape(std::string_view mnemonic) {
 namespace slmp::program::detail {
 
 bool known_but_unsupported(std::string_view mnemonic) {
-    // Unsigned (LD=_U ...) and double-float (LDED= ...) compare contacts are phase 2 (spec §5.3).
+    // Unsigned (LD=_U ...) and double-float (LDED= ...) compare contacts are phase 2 (docs/program.md "Instructions").
     if (mnemonic.ends_with("_U")) return true;
     for (std::string_view prefix : {"LDED", "ANDED", "ORED"})
         if (mnemonic.starts_with(prefix)) return true;
-    // Interrupts (spec §5.10) and a few common instructions not in phase 1.
+    // Interrupts (docs/program.md "Instructions") and a few common instructions not in phase 1.
     static constexpr std::array<std::string_view, 22> kKnown{
         "DI", "EI", "IRET", "IMASK", "RFS", "COM", "PID", "SORT", "ABS", "DABS", "LIMIT", "DLIMIT",
         "UDCNT1", "UDCNT2", "TTMR", "STMR", "RAMP", "SPD", "PLSY", "PWM", "SER", "DSER"};
@@ -293,7 +293,7 @@ std::string_view family_name(devicemodel::Family family) {
     }
 }
 
-// SD0 codes by cause and family (spec §3.5): Q/L codes are decimal numbers
+// SD0 codes by cause and family (docs/program.md "Operation errors"): Q/L codes are decimal numbers
 // stored as binary (4100 -> 0x1004), iQ-R/iQ-F codes hexadecimal. Every iQ
 // code and the Q nest codes are inferred (docs/program.md "Operation errors"
 // lists them as unverified); a profile key may override them later.
@@ -313,7 +313,7 @@ constexpr std::array<ErrorCodes, 10> kErrorCodes{{
     {Cause::BreakWithoutFor, 4203, 0x3300},
     {Cause::ReturnWithoutCall, 4212, 0x3300},
     {Cause::CallNest, 4213, 0x3300},
-    {Cause::Watchdog, 5001, 0x1810},   // iQ: placeholder of spec §3.4
+    {Cause::Watchdog, 5001, 0x1810},   // iQ: placeholder of docs/program.md "Modelled time"
 }};
 }  // namespace
 
@@ -341,7 +341,7 @@ std::string_view cause_text(Cause cause) {
     return "";
 }
 
-// spec §6.2, in picoseconds (END processing in µs there).
+// docs/program.md "Modelled time", in picoseconds (END processing in µs there).
 Costs costs_for(devicemodel::Family family) {
     switch (family) {
         case devicemodel::Family::IQR: return {980, 1960, 4000, 20000, 1000, 50'000'000};

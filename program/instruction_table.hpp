@@ -11,7 +11,7 @@
 
 namespace slmp::program::detail {
 
-// How an instruction takes part in the rung (the compiler's result-stack check, spec §3.1).
+// How an instruction takes part in the rung (the compiler's result-stack check, docs/program.md "Instructions").
 enum class Role : std::uint8_t {
     Load,        // LD-class: starts a rung or opens a block
     Combine,     // AND/OR-class: needs an open value
@@ -45,7 +45,7 @@ struct InstructionInfo {
     Role role;
     Cost cost;
     std::uint8_t families;        // FamilyBits
-    bool pulse_form;              // MNEMONIC + "P" executes on the rising edge (spec §5.11)
+    bool pulse_form;              // MNEMONIC + "P" executes on the rising edge (docs/program.md "Instructions")
     bool edge;                    // owns an edge bit itself (LDP, PLS, SCJ ...)
     bool swap_two;                // the short form "s d" means d := d op s (+, -, E+, WAND ...)
     std::uint8_t form_count;

@@ -9,7 +9,7 @@ namespace slmp::program::detail {
 namespace {
 
 // Character i of a string operand: a constant, or words holding 2 characters
-// each, first in the low byte (spec §5.6 $MOV). -1 past the device's end.
+// each, first in the low byte (docs/program.md "Instructions" $MOV). -1 past the device's end.
 int char_at(Machine& m, const Operand& o, std::uint32_t base, std::uint32_t i) {
     if (o.kind == OperandKind::String) {
         const auto& text = m.program->strings[o.value];
@@ -21,7 +21,7 @@ int char_at(Machine& m, const Operand& o, std::uint32_t base, std::uint32_t i) {
     return static_cast<int>((i & 1u) ? (word >> 8) & 0xFFu : word & 0xFFu);
 }
 
-// Character code by character code; with an equal prefix the shorter string is smaller (spec §5.3).
+// Character code by character code; with an equal prefix the shorter string is smaller (docs/program.md "Instructions").
 int compare_strings(Machine& m, const Operand& a, const Operand& b) {
     const auto base_a = a.kind == OperandKind::String ? 0 : effective(m, a, 1);
     const auto base_b = b.kind == OperandKind::String ? 0 : effective(m, b, 1);

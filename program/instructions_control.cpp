@@ -7,7 +7,7 @@ namespace slmp::program::detail {
 SLMP_HANDLER(cj) {
     if (m.condition()) m.pc = s.op[0].value;
 }
-// SCJ jumps from the scan after r turned ON, while r stays ON (spec §5.10):
+// SCJ jumps from the scan after r turned ON, while r stays ON (docs/program.md "Instructions"):
 // the edge bit holds r of this step's previous execution.
 SLMP_HANDLER(scj) {
     const bool now = m.condition();
@@ -32,7 +32,7 @@ SLMP_HANDLER(ret) {
     if (m.call_depth == 0) return m.raise(Cause::ReturnWithoutCall);
     m.pc = m.calls[--m.call_depth];
 }
-// FOR n: n <= 0 runs the loop once (spec §5.10, inferred).
+// FOR n: n <= 0 runs the loop once (docs/program.md "Instructions", inferred).
 SLMP_HANDLER(for_) {
     const std::int32_t n = get16(m, s.op[0]);
     if (m.fault) return m.raise(m.cause);
@@ -56,7 +56,7 @@ SLMP_HANDLER(break_) {
     --m.loop_depth;
     m.pc = s.op[1].value;
 }
-// WDT restarts the watchdog measurement (spec §3.4); the modelled time still counts.
+// WDT restarts the watchdog measurement (docs/program.md "Modelled time"); the modelled time still counts.
 SLMP_HANDLER(wdt) {
     (void)s;
     if (m.condition()) m.limit_ps = m.cost_ps + m.wdt_ps;

@@ -21,7 +21,7 @@ std::int64_t from_bcd(std::uint32_t v, unsigned nibbles) {
     }
     return r;
 }
-// Half away from zero on Q/L and iQ-R (spec §5.5, inferred; used for iQ-F too).
+// Half away from zero on Q/L and iQ-R (docs/program.md "Instructions", inferred; used for iQ-F too).
 double rounded(float f) { return std::round(static_cast<double>(f)); }
 }  // namespace
 

@@ -7,7 +7,7 @@ namespace slmp::program::detail {
 
 namespace {
 inline bool& edge_of(Machine& m, const Step& s) { return reinterpret_cast<bool&>(m.edges[s.edge]); }
-// The signal a pulse contact watches: the device, forced OFF in an OFF MC block (spec §4.3).
+// The signal a pulse contact watches: the device, forced OFF in an OFF MC block (docs/program.md "The scan").
 inline bool rose(Machine& m, const Step& s) {
     const bool now = read_bit(m, s.op[0]) & !m.mc_off;
     bool& before = edge_of(m, s);
@@ -105,7 +105,7 @@ SLMP_HANDLER(rst_word) {
     put16(m, s.op[0], 0);
     if (m.fault) [[unlikely]] m.raise(m.cause);
 }
-// PLS/PLF: d follows the edge of r at every execution (spec §4.3).
+// PLS/PLF: d follows the edge of r at every execution (docs/program.md "The scan").
 SLMP_HANDLER(pls) {
     const bool now = m.condition();
     bool& before = edge_of(m, s);
@@ -133,7 +133,7 @@ SLMP_HANDLER(ff) {
     if (m.fault) [[unlikely]] m.raise(m.cause);
 }
 
-// MC n d (spec §5.1): with r OFF (or forced OFF by an outer level) level n turns
+// MC n d (docs/program.md "Instructions"): with r OFF (or forced OFF by an outer level) level n turns
 // OFF and every step up to its MCR sees r forced OFF through m.mc_off.
 SLMP_HANDLER(mc) {
     const bool on = m.condition();
@@ -150,7 +150,7 @@ SLMP_HANDLER(mcr) {
     m.mc_off = m.mc_mask != 0;
 }
 SLMP_HANDLER(nop) { (void)m, (void)s; }
-// END/FEND: END processing's modelled time; the watchdog includes it (spec §3.4).
+// END/FEND: END processing's modelled time; the watchdog includes it (docs/program.md "Modelled time").
 SLMP_HANDLER(end) {
     (void)s;
     m.cost_ps += m.program->costs.end_ps;

@@ -1,5 +1,5 @@
-// §5.2 timers and counters, with the update rule of spec §4.1-§4.2
-// (docs/program.md "Timers"): the value moves when OUT T executes, from an
+// §5.2 timers and counters, with the update rule of docs/program.md
+// "Timers": the value moves when OUT T executes, from an
 // accumulator that end_of_scan() fills for every timer whose coil is ON.
 // Step fields: op[0] the timer/counter (number fixed at load), op[1] the
 // preset, edge = timer slot, aux = time base in µs, variant bit 0 = retentive,
@@ -51,7 +51,7 @@ SLMP_HANDLER(out_timer) {
     store_word(m, area, n, static_cast<std::uint32_t>(value));
 }
 
-// Counts on the coil's rising edge compared with the stored coil (CC), spec §4.2.
+// Counts on the coil's rising edge compared with the stored coil (CC), docs/program.md "Timers".
 SLMP_HANDLER(out_counter) {
     const auto area = s.op[0].area;
     const auto a = static_cast<std::size_t>(area);

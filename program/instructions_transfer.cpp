@@ -1,5 +1,5 @@
 // §5.6 transfer (docs/program.md "Instructions"). Blocks are range-checked
-// whole before the first word moves and cost `block` per word (spec §6.2).
+// whole before the first word moves and cost `block` per word (docs/program.md "Modelled time").
 #include "program/handlers.hpp"
 
 namespace slmp::program::detail {

@@ -1,4 +1,4 @@
-// Operand syntax of spec §2.6 (docs/program.md "Operands"): devices through
+// Operand syntax (docs/program.md "Operands"): devices through
 // the one device table, plus the timer/counter names without a part letter,
 // digit designation, bit of a word, index modification and constants.
 #include "program/operands.hpp"
@@ -113,7 +113,7 @@ bool parse_device(std::string_view text, devicemodel::Numbering numbering, Parse
     return true;
 }
 
-// "E1.5", "E-2.5", "E1.234E+3", "E1.234+3" (GX Developer exponent style, spec §2.6).
+// "E1.5", "E-2.5", "E1.234E+3", "E1.234+3" (GX Developer exponent style, docs/program.md "Operands").
 bool parse_real(std::string_view body, float& value) {
     std::string text(body);
     if (text.find('E') == std::string::npos) {

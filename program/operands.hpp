@@ -1,4 +1,4 @@
-// Operand text of spec §2.6 parsed into its parts, before the compiler
+// Operand text of docs/program.md "Operands" parsed into its parts, before the compiler
 // resolves it against an instruction's operand type and the profile's sizes
 // (docs/program.md "Operands").
 #pragma once

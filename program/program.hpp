@@ -122,7 +122,7 @@ public:
     void end_of_scan(std::chrono::microseconds scan_time);
     // STOP->RUN, power-on, RESET: edge bits, accumulators and SCJ state cleared.
     void restart();
-    // PAUSE->RUN: timer accumulators 0 (the pause does not count), edge bits kept (spec §3.2).
+    // PAUSE->RUN: timer accumulators 0 (the pause does not count), edge bits kept (docs/program.md "The scan").
     void resume();
 
     // The last operation error or watchdog of any scan since the program was

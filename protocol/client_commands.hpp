@@ -4,8 +4,8 @@
 // information block of an error response. Like client.hpp, every request goes
 // through build_request() and a FieldWriter, so binary and ASCII are written once
 // and the tests, slmp-bench and the slmp CLI send exactly the same bytes.
-// Layouts: ../shared/spec/slmp-frames-and-devices.md §6.3–§6.4,
-//          ../shared/spec/slmp-labels-remote-misc.md §1.3, §5, §6, §7.
+// Layouts: SLMP Reference Manual §5.2,
+//          SLMP Reference Manual ch. 5, §5.6, §5.7, §5.9.
 #pragma once
 
 #include <cstdint>

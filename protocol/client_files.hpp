@@ -1,5 +1,5 @@
 // Client-side builders and decoders for the file commands 1810-182A
-// (slmp-files.md §6). Like the other client builders they write through
+// (SLMP Reference Manual §5.8). Like the other client builders they write through
 // build_request() and a FieldWriter, so the CLI (slmp file ...) and the tests
 // send exactly what the server decodes. `iqr` picks subcommand 0040 (UTF-16
 // paths, length-prefixed password) over 0000 (8.3 names, 4-character password).

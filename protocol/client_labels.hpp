@@ -2,7 +2,7 @@
 // Read/Write 041A/141A and Label Read/Write Random 041C/141B. Like the other
 // client builders they write through build_request() and a FieldWriter, so
 // the CLI and the tests send what the server decodes.
-// Layouts: ../shared/spec/slmp-labels-remote-misc.md §2.7–§2.10.
+// Layouts: SLMP Reference Manual §5.3.
 #pragma once
 
 #include <cstdint>

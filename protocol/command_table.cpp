@@ -13,7 +13,7 @@ using enum DeviceForm;
 using enum Access;
 using devicemodel::Family;
 
-// Which port families serve a command (hardware-behaviour.md §4): the QnU/L
+// Which port families serve a command (real-CPU measurements): the QnU/L
 // built-in ports refuse 0101, 0406/1406, 0619 and 0613/1613; the FX5 built-in
 // port refuses 0801/0802 and 0613/1613. Every other command is served by all.
 constexpr Families kAll = 0xFF;
@@ -21,7 +21,7 @@ constexpr Families kNotQL = kAll & ~(family_bit(Family::QnU) | family_bit(Family
 constexpr Families kNotFx5 = kAll & ~family_bit(Family::IQF);
 constexpr Families kNotQLFx5 = kNotQL & kNotFx5;
 // Label commands need GX Works3 global labels in the CPU: iQ-R only
-// (slmp-labels-remote-misc.md §12; Q/L, QJ71E71 and FX5 ports answer C059).
+// (SLMP Reference Manual §5.1; Q/L, QJ71E71 and FX5 ports answer C059).
 constexpr Families kIqrOnly = family_bit(Family::IQR);
 
 constexpr std::uint8_t kExt = kExtended;
@@ -105,7 +105,7 @@ constexpr std::array kCommands = {
     CommandSpec{0x1617, 0x0000, "Clear Error", clear_error, nullptr, Q, None, kCtl | kOp},
     CommandSpec{0x1630, 0x0000, "Remote Password Unlock", password_unlock, nullptr, Q, None, kPw},
     CommandSpec{0x1631, 0x0000, "Remote Password Lock", password_lock, nullptr, Q, None, kPw},
-    // File control (slmp-files.md §2): 0000 Q/L, 0004 L, 0040 iQ-R; the
+    // File control (SLMP Reference Manual §5.8): 0000 Q/L, 0004 L, 0040 iQ-R; the
     // handler answers a subcommand the CPU's family does not speak (§2.2).
     // kW on the commands system protect blocks (§5). FX5: not served.
     CommandSpec{0x1810, 0x0000, "Read Directory/File (Q/L)", file_list, nullptr, Q, None, 0, kNotFx5},

@@ -96,7 +96,7 @@ EndCode resolve(CommandContext& ctx, const DeviceField& field, Use use, Target& 
             if (!cpu) return kNoSuchModule;
             // Each CPU of a multi-CPU rack writes only its own CPU buffer memory;
             // another CPU's is read-only to it (issue 14; 414A as seen on
-            // protected extended targets, hardware-behaviour §2).
+            // protected extended targets, real-CPU measurements).
             if (writes(use) && cpu != &ctx.cpu) return kOtherCpusBuffer;
             target.memory = &cpu->memory();
             target.owner = cpu;

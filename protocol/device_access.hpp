@@ -13,8 +13,8 @@
 namespace slmp::protocol {
 
 // Which command names the device; each has its own list of devices it may not
-// name (slmp-frames-and-devices.md §6 "devices that cannot be specified",
-// corrected by hardware-behaviour.md §7 where real CPUs differ).
+// name (SLMP Reference Manual §5.2 "devices that cannot be specified",
+// corrected by real-CPU measurements where real CPUs differ).
 enum class Use : std::uint8_t { BatchRead, BatchWrite, RandomRead, RandomWrite, Monitor, BlockRead, BlockWrite };
 
 struct Target {

@@ -1,7 +1,7 @@
 // SLMP end codes: one enum, one description table. Which code a situation gets
 // on which CPU is decided by the profile (devicemodel/cpu_profile.hpp); these
 // are the names the code base uses for them.
-// Sources: ../shared/spec/hardware-behaviour.md §2, slmp-frames-and-devices.md §3.5.
+// Sources: real-CPU measurements, SLMP Reference Manual ch. 4.
 #pragma once
 
 #include <cstdint>
@@ -31,8 +31,8 @@ enum class EndCode : std::uint16_t {
     RemotePasswordLockedOut = 0xC815,   // 1630/1631 during the lock-out after repeated mismatches (chosen in C810-C815)
     // Codes real CPUs and modules answer, named so that describe() explains them
     // to CLI users and in logs (the simulator sends some of them: docs/end-codes.md).
-    // Sources: hardware-behaviour.md §2, slmp-frames-and-devices.md §3.5,
-    // slmp-labels-remote-misc.md §10.2, §10.4 (L-series manual, marked [ext]).
+    // Sources: real-CPU measurements, SLMP Reference Manual ch. 4,
+    // SLMP Reference Manual ch. 6 (L-series manual, marked [ext]).
     RunWriteProhibited = 0x0055,        // [ext] write to a CPU in RUN while online change is disabled
     ModuleNotPresent = 0x4043,          // 0601/1601 with module number 0000
     ModuleNotAccessible = 0x4080,       // 0601/1601 with module number 03FF; QJ71E71 extended random over limit

@@ -40,7 +40,7 @@ struct Session {
     MonitorRegistration monitor;   // per connection: another client's 0801 does not replace it
     // Remote password (1630/1631): a connection starts locked whenever the CPU
     // has a password and its port has the password enabled; Unlock opens this
-    // connection only (slmp-labels-remote-misc.md §6).
+    // connection only (SLMP Reference Manual §5.7).
     bool password_unlocked = false;
     // Settings of the port the connection came in on (config::PortConfig, with
     // the profile's defaults); station::Station::new_session fills them.
@@ -51,7 +51,7 @@ struct Session {
     // The port's own network and station numbers (set by the transport from
     // the port's configuration); requests addressed to them are served.
     StationNumbers own{};
-    // Commands per connection (spec §2.3), set by the transport before each
+    // Commands per connection (SLMP Reference Manual §3.3), set by the transport before each
     // request: how many requests of the same burst came before this one and
     // are not answered yet, and how many connections the port has open.
     std::size_t queued_ahead = 0;

@@ -1,6 +1,6 @@
 // An error response: the end code, then the error information — the
 // responding station's route and the failed request's command and
-// subcommand (slmp-frames-and-devices.md §3.2.4; hardware-behaviour.md §1).
+// subcommand (SLMP Reference Manual ch. 4; real-CPU measurements).
 // Used by the engine and by scenario faults that force an end code, so both
 // send the same bytes.
 #pragma once

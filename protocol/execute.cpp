@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
+#include "devicemodel/hex.hpp"
 #include "protocol/command_table.hpp"
 #include "protocol/engine.hpp"
 #include "protocol/frame_1e.hpp"
-#include "protocol/hex.hpp"
 #include "protocol/reply.hpp"
 
 namespace slmp::protocol {
@@ -50,12 +50,12 @@ Outcome bad_header(const Request& request, Reply& reply) {
 }
 
 std::string route_note(const Route& route) {
-    return "request for network " + hex_text(route.network, 2) + " station " + hex_text(route.station, 2) +
-           " module I/O " + hex4(route.module_io) + " multidrop " + hex_text(route.multidrop, 2) +
+    return "request for network " + devicemodel::hex_text(route.network, 2) + " station " + devicemodel::hex_text(route.station, 2) +
+           " module I/O " + devicemodel::hex4(route.module_io) + " multidrop " + devicemodel::hex_text(route.multidrop, 2) +
            "; only the own station (00/FF, or the port's own network/station numbers, module I/O 03FF, multidrop 00) and its configured CPUs (module I/O 03E0-03E3) are served";
 }
 
-// Remote password (slmp-labels-remote-misc.md §6): a locked connection gets
+// Remote password (SLMP Reference Manual §5.7): a locked connection gets
 // C201 for everything but the rows that are exempt (Unlock 1630, Lock 1631).
 bool locked_out(const devicemodel::Cpu& cpu, const Session& session, std::uint16_t command) {
     if (!password_guards(cpu, session) || session.password_unlocked) return false;
@@ -73,11 +73,11 @@ std::optional<Outcome> port_refusal(const devicemodel::CpuProfile& cpu, const Po
     if ((row && !row->served_by(cpu.family)) ||
         std::find(extra.begin(), extra.end(), request.command) != extra.end())
         return reply.error(end_code(profile.not_supported_code),
-                           "command " + hex4(request.command) + " is not supported by " + cpu.name);
+                           "command " + devicemodel::hex4(request.command) + " is not supported by " + cpu.name);
     const auto form = request.subcommand & 0xFF7F;   // 008x: the same forms with the extension specification
     if (row && row->device_command() && (form == 0x0002 || form == 0x0003) &&
         profile.iqr_subcommands.kind != Refusal::Kind::Serve)
-        return reply.refuse(profile.iqr_subcommands, hex4(request.command) + "/" + hex4(request.subcommand) +
+        return reply.refuse(profile.iqr_subcommands, devicemodel::hex4(request.command) + "/" + devicemodel::hex4(request.subcommand) +
                                                          " uses the iQ-R device form, which " + cpu.name +
                                                          " does not accept");
     return std::nullopt;
@@ -100,7 +100,7 @@ std::optional<Outcome> protection_refusal(const devicemodel::Cpu& cpu, const Por
     return std::nullopt;
 }
 
-// Commands per connection (spec §2.3): 1 + buffer ÷ connections requests fit
+// Commands per connection (SLMP Reference Manual §3.3): 1 + buffer ÷ connections requests fit
 // in the port's receive buffer, fractions truncated; one more is refused as
 // the profile says (CEE0 by default, docs/end-codes.md).
 std::optional<Outcome> over_pipeline_limit(const PortProfile& profile, const Session& session, Reply& reply) {
@@ -143,8 +143,8 @@ Outcome Engine::execute(const Request& request, Session& session) {
     if (!spec)
         return reply.error(end_code(profile.not_supported_code),
                            find_any_row(request.command)
-                               ? "unknown subcommand " + hex4(request.subcommand) + " for command " + hex4(request.command)
-                               : "unknown or unimplemented command " + hex4(request.command));
+                               ? "unknown subcommand " + devicemodel::hex4(request.subcommand) + " for command " + devicemodel::hex4(request.command)
+                               : "unknown or unimplemented command " + devicemodel::hex4(request.command));
     auto& target = *cpus_[request.target];
     if (spec->control_cpu_only() && request.target != 0)
         return reply.error(end_code(profile.not_supported_code),

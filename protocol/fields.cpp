@@ -3,7 +3,7 @@
 #include <bit>
 #include <cstring>
 
-#include "protocol/hex.hpp"
+#include "devicemodel/hex.hpp"
 
 namespace slmp::protocol {
 
@@ -70,7 +70,7 @@ std::uint32_t FieldReader::number(std::size_t bytes, std::string_view what) {
     }
     auto field = take(bytes * 2, what);
     if (field.empty()) return 0;
-    auto value = parse_hex(field);
+    auto value = devicemodel::parse_hex(field);
     if (!value) fail(EndCode::AsciiConversion, what);
     return value.value_or(0);
 }
@@ -129,7 +129,7 @@ std::uint32_t FieldReader::device_number(const DeviceSpec* spec, std::size_t dig
     while (i < digits.size() && digits[i] == ' ') ++i;
     std::uint64_t value = 0;
     for (; i < digits.size(); ++i) {
-        auto parsed = parse_hex(digits.subspan(i, 1));
+        auto parsed = devicemodel::parse_hex(digits.subspan(i, 1));
         if (!parsed || static_cast<int>(*parsed) >= radix) {
             fail(EndCode::AsciiConversion, what);
             return 0;
@@ -208,7 +208,7 @@ DeviceField FieldReader::extended_device(DeviceForm form, std::string_view what)
     if (!ext.indirect && at != "00") fail(EndCode::BadRequestContent, what);
     std::string_view name(reinterpret_cast<const char*>(extension.data()), 4);
     if (name == "0000") return field;
-    auto value = parse_hex(extension.subspan(1));
+    auto value = devicemodel::parse_hex(extension.subspan(1));
     if (!value || (name[0] != 'J' && name[0] != 'U')) {
         fail(EndCode::BadRequestContent, what);
         return field;
@@ -260,7 +260,7 @@ void FieldWriter::number(std::uint32_t value, std::size_t bytes) {
     if (codec_ == Codec::Binary) {
         for (std::size_t i = 0; i < bytes; ++i) out_.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
     } else {
-        append_hex(out_, value, static_cast<unsigned>(bytes * 2));
+        devicemodel::append_hex(out_, value, static_cast<unsigned>(bytes * 2));
     }
 }
 
@@ -286,7 +286,7 @@ void FieldWriter::text(std::string_view characters) { out_.insert(out_.end(), ch
 void FieldWriter::device_number(const DeviceSpec& spec, std::uint32_t value, std::size_t digits) {
     auto radix = static_cast<std::uint32_t>(ascii_radix(spec, options_));
     std::string number(digits, '0');
-    for (std::size_t i = digits; i-- > 0 && value != 0; value /= radix) number[i] = "0123456789ABCDEF"[value % radix];
+    for (std::size_t i = digits; i-- > 0 && value != 0; value /= radix) number[i] = devicemodel::kHexDigits[value % radix];
     text(number);
 }
 
@@ -324,7 +324,7 @@ void FieldWriter::extended_device(DeviceForm form, const devicemodel::DeviceAddr
         text("0000");
     } else {
         text(extension.kind == Kind::LinkDirect ? "J" : "U");
-        append_hex(out_, extension.target, 3);
+        devicemodel::append_hex(out_, extension.target, 3);
     }
     ascii_modifier(extension.target_modifier, form);
     text(devicemodel::ascii_name(spec, ascii_code_chars(form)));
@@ -362,7 +362,7 @@ void FieldWriter::words(std::span<const std::uint16_t> values) {
         return;
     }
     out_.reserve(at + 4 * values.size());
-    for (auto v : values) append_hex(out_, v, 4);
+    for (auto v : values) devicemodel::append_hex(out_, v, 4);
 }
 
 void FieldWriter::raw(std::span<const std::uint8_t> bytes) { out_.insert(out_.end(), bytes.begin(), bytes.end()); }

@@ -1,6 +1,6 @@
 // FieldReader / FieldWriter: the only code that knows binary from ASCII.
 // A command handler is written once against these; it never asks which codec
-// it has. Rules: ../shared/spec/slmp-frames-and-devices.md §3.3, §5.3–§5.7.
+// it has. Rules: SLMP Reference Manual ch. 4, §5.2.
 //
 // FieldReader has a sticky error: the first bad or missing field records an end
 // code and a field name, later reads return zeros. A handler decodes every

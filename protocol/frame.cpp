@@ -4,8 +4,8 @@
 #include <array>
 #include <optional>
 
+#include "devicemodel/hex.hpp"
 #include "protocol/frame_1e.hpp"
-#include "protocol/hex.hpp"
 
 namespace slmp::protocol {
 namespace {
@@ -63,7 +63,7 @@ std::optional<std::uint32_t> field(std::span<const std::uint8_t> data, std::size
         for (std::size_t i = 0; i < bytes; ++i) value |= std::uint32_t{data[offset + i]} << (8 * i);
         return value;
     }
-    return parse_hex(data.subspan(offset, bytes * 2));
+    return devicemodel::parse_hex(data.subspan(offset, bytes * 2));
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // Frame headers: 3E/4E (binary and ASCII, requests and responses), the
-// station-number-extended frame (binary requests; spec §3.1.1, §3.1.6) and the
+// station-number-extended frame (binary requests; SLMP Reference Manual ch. 4) and the
 // A-compatible 1E frame (requests; protocol/frame_1e.hpp, docs/frames.md).
-// Layout: ../shared/spec/slmp-frames-and-devices.md §3.1–§3.3.
+// Layout: SLMP Reference Manual ch. 4.
 //
 // scan_frame() looks at the start of a byte stream and says whether a whole
 // frame is there, how long it is, or how many bytes to throw away. It never

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <array>
 
+#include "devicemodel/hex.hpp"
 #include "protocol/commands/handlers.hpp"
 #include "protocol/fields.hpp"
-#include "protocol/hex.hpp"
 
 namespace slmp::protocol {
 namespace {
@@ -60,7 +60,7 @@ const Command1E* leading_command(std::span<const std::uint8_t> data, DataCodePol
         prefix = true;   // every ASCII subheader starts with 0 or 1
         return nullptr;
     }
-    auto code = parse_hex(data.first(2));
+    auto code = devicemodel::parse_hex(data.first(2));
     codec = Codec::Ascii;
     return code ? find_command_1e(static_cast<std::uint8_t>(*code)) : nullptr;
 }
@@ -120,7 +120,7 @@ std::optional<FrameScan> scan_1e(std::span<const std::uint8_t> data, DataCodePol
     // A one-byte field at byte `offset` (ASCII: two hex characters).
     auto byte_at = [&](std::size_t offset) -> std::optional<std::uint32_t> {
         if (codec == Codec::Binary) return data[offset];
-        return parse_hex(data.subspan(offset * 2, 2));
+        return devicemodel::parse_hex(data.subspan(offset * 2, 2));
     };
     auto pc = byte_at(1);
     std::optional<std::uint32_t> count = 0;

@@ -1,4 +1,4 @@
-// How one label value travels (slmp-labels-remote-misc.md §2.6): 32-bit types
+// How one label value travels (SLMP Reference Manual §5.3): 32-bit types
 // as one 32-bit value (ASCII: 8 digits, high first), LREAL as one 64-bit
 // value, everything else (bits, words, strings) as 16-bit words. Shared by
 // the label handlers and the client encoder/decoder, so both sides agree.

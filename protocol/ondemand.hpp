@@ -1,5 +1,5 @@
 // Ondemand (2101/0000): data the CPU sends to a client without a request
-// (slmp-labels-remote-misc.md §9). The manuals give only the command,
+// (SLMP Reference Manual §5.11). The manuals give only the command,
 // subcommand and data and leave the frame around them to the device; the
 // frame chosen here (docs/timing.md, "Ondemand", inferred) is a normal
 // response of the client's own shape: 3E (D0 00) or 4E (D4 00, serial 0000),

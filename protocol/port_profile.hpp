@@ -3,7 +3,7 @@
 // codes and its limits. Loaded with the CPU's facts from the same profile file
 // (config/profiles/*.json, by config/); the CPU's own facts — identity, device
 // sizes, special registers, password rule — are devicemodel::CpuProfile.
-// Facts: ../shared/spec/hardware-behaviour.md §2–§4, §7.
+// Facts: real-CPU measurements.
 #pragma once
 
 #include <array>
@@ -29,7 +29,7 @@ struct PointLimit {
 
 // A limit that depends on the subcommand family: Q form (00□0/00□1) or iQ-R
 // form (00□2/00□3). With the Q form's extended subcommands (0080/0081) each
-// point or block counts twice (slmp-frames-and-devices.md §6.3–§6.8, *1).
+// point or block counts twice (SLMP Reference Manual §5.2, *1).
 struct FormLimit {
     std::uint32_t q = 0;
     std::uint32_t iqr = 0;
@@ -45,7 +45,7 @@ struct PortProfile {
     // The station-number-extended frame (68 00; CC-Link IE TSN modules): served,
     // or not a frame at all (skipped unanswered, as a port without it does).
     bool station_extended_frame = false;
-    // Commands per connection (spec §2.3): 1 + pipeline_buffer ÷ connections
+    // Commands per connection (SLMP Reference Manual §3.3): 1 + pipeline_buffer ÷ connections
     // requests may wait in the port's receive buffer; 0 = no limit. Requests
     // beyond it get `pipeline_over_limit` (docs/end-codes.md: CEE0).
     std::uint32_t pipeline_buffer = 0;
@@ -60,7 +60,7 @@ struct PortProfile {
     std::uint16_t unknown_device_code = 0xC05B;    // device code the CPU does not know
     std::uint16_t bad_unit_code = 0xC05C;          // bit units on a word device and the like
     // A write while the CPU is in RUN on a port with online change disabled
-    // (0055: the L/Q E71-style code; slmp-labels-remote-misc.md §10.4).
+    // (0055: the L/Q E71-style code; SLMP Reference Manual ch. 6).
     std::uint16_t online_change_code = 0x0055;
     // A write or remote operation while the CPU's system protect is on
     // (4004, inferred: the 4xxx "system protect" code of Q/L CPUs).

@@ -1,8 +1,8 @@
 #include "protocol/reply.hpp"
 
+#include "devicemodel/hex.hpp"
 #include "protocol/error_response.hpp"
 #include "protocol/frame_1e.hpp"
-#include "protocol/hex.hpp"
 #include "protocol/message.hpp"
 
 namespace slmp::protocol {
@@ -35,7 +35,7 @@ Outcome Reply::ok(std::span<const std::uint8_t> data) {
 
 Outcome Reply::error(EndCode code, std::string note) {
     outcome_.end_code = code;
-    outcome_.note = hex4(raw(code)) + " (" + std::string(describe(code)) + "): " + note;
+    outcome_.note = devicemodel::hex4(raw(code)) + " (" + std::string(describe(code)) + "): " + note;
     outcome_.action = Outcome::Action::Respond;
     outcome_.response = encode_error_response(header_, outcome_.command, outcome_.subcommand, code);
     return std::move(outcome_);

@@ -18,7 +18,7 @@ public:
     // Response data after the end code 0000.
     Outcome ok(std::span<const std::uint8_t> data);
     // End code, then the error information: the responding station's route and
-    // the request's command and subcommand (spec §3.2.4; hardware-behaviour §1).
+    // the request's command and subcommand (SLMP Reference Manual ch. 4; real-CPU measurements).
     Outcome error(EndCode code, std::string note);
     // What the profile says for a request its port does not serve.
     Outcome refuse(const Refusal& refusal, std::string note);

@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "config/config.hpp"
+#include "devicemodel/overloaded.hpp"
 
 namespace slmp::scenarios {
 namespace {
@@ -95,13 +96,7 @@ struct Binder {
     }
 };
 
-template <class... Ts>
-struct overloaded : Ts... {
-    using Ts::operator()...;
-};
-// clang < 17 does not deduce aggregate template arguments (P1816); say it.
-template <class... Ts>
-overloaded(Ts...) -> overloaded<Ts...>;
+using devicemodel::overloaded;
 
 }  // namespace
 

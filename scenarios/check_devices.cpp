@@ -1,18 +1,13 @@
 #include "scenarios/check_devices.hpp"
 
 #include "config/config.hpp"
+#include "devicemodel/overloaded.hpp"
 #include "scenarios/device_values.hpp"
 
 namespace slmp::scenarios {
 namespace {
 
-template <class... Ts>
-struct overloaded : Ts... {
-    using Ts::operator()...;
-};
-// clang < 17 does not deduce aggregate template arguments (P1816); say it.
-template <class... Ts>
-overloaded(Ts...) -> overloaded<Ts...>;
+using devicemodel::overloaded;
 
 struct Checker {
     const Scenario& scenario;

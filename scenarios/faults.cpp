@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "protocol/hex.hpp"
+#include "devicemodel/hex.hpp"
 
 namespace slmp::scenarios {
 
@@ -117,7 +117,7 @@ FaultDecision FaultSet::decide(const Incoming& incoming, double now_ms, const Ev
         if (log)
             log(EventLevel::Info, "fault '" + e.name + "' (" + std::string(to_string(a.kind)) + ") fired on " +
                                       (incoming.frontend() ? std::string(to_string(incoming.request_protocol)) + " " + incoming.command_text
-                                       : request.has_command ? protocol::hex4(request.command) + "/" + protocol::hex4(request.subcommand)
+                                       : request.has_command ? devicemodel::hex4(request.command) + "/" + devicemodel::hex4(request.subcommand)
                                                              : std::string("a request")) +
                                       incoming.from() + " (" + std::to_string(e.fired) +
                                       (e.fired == 1 ? " time)" : " times)"));
@@ -141,7 +141,7 @@ void corrupt(std::vector<std::uint8_t>& response, const protocol::FrameHeader& r
             } else {
                 std::string text(response.begin() + static_cast<long>(end - 4), response.begin() + static_cast<long>(end));
                 auto v = static_cast<std::uint16_t>(std::stoul(text, nullptr, 16) + action.bytes);
-                auto digits = protocol::hex4(v);
+                auto digits = devicemodel::hex4(v);
                 std::copy(digits.begin(), digits.end(), response.begin() + static_cast<long>(end - 4));
             }
             return;

@@ -5,38 +5,15 @@
 #include <nlohmann/json.hpp>
 
 #include "config/config.hpp"
+#include "devicemodel/hex.hpp"
 
 namespace slmp::scenarios {
 
 using nlohmann::json;
 
-std::string to_hex(std::span<const std::uint8_t> bytes) {
-    static constexpr char digits[] = "0123456789abcdef";
-    std::string text;
-    text.reserve(bytes.size() * 2);
-    for (auto b : bytes) {
-        text += digits[b >> 4];
-        text += digits[b & 0xF];
-    }
-    return text;
-}
+std::string to_hex(std::span<const std::uint8_t> bytes) { return devicemodel::bytes_to_hex(bytes, /*lower_case=*/true); }
 
-std::optional<std::vector<std::uint8_t>> from_hex(std::string_view text) {
-    if (text.size() % 2) return std::nullopt;
-    std::vector<std::uint8_t> bytes;
-    auto digit = [](char c) -> int {
-        if (c >= '0' && c <= '9') return c - '0';
-        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-        return -1;
-    };
-    for (std::size_t i = 0; i < text.size(); i += 2) {
-        int hi = digit(text[i]), lo = digit(text[i + 1]);
-        if (hi < 0 || lo < 0) return std::nullopt;
-        bytes.push_back(static_cast<std::uint8_t>(hi << 4 | lo));
-    }
-    return bytes;
-}
+std::optional<std::vector<std::uint8_t>> from_hex(std::string_view text) { return devicemodel::hex_to_bytes(text); }
 
 namespace {
 

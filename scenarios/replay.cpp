@@ -1,6 +1,6 @@
 #include "scenarios/replay.hpp"
 
-#include "protocol/hex.hpp"
+#include "devicemodel/hex.hpp"
 
 namespace slmp::scenarios {
 namespace {
@@ -44,7 +44,7 @@ ReplayBook::Answer ReplayBook::answer(std::span<const std::uint8_t> request, con
             (*response)[at + 1] = static_cast<std::uint8_t>(header.serial >> 8);
         } else if (size == 4) {
             std::vector<std::uint8_t> digits;
-            protocol::append_hex(digits, header.serial, 4);
+            devicemodel::append_hex(digits, header.serial, 4);
             std::copy(digits.begin(), digits.end(), response->begin() + static_cast<long>(at));
         }
     }

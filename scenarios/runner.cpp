@@ -4,23 +4,18 @@
 
 #include "config/config.hpp"
 #include "devicemodel/drives.hpp"
+#include "devicemodel/hex.hpp"
+#include "devicemodel/overloaded.hpp"
 #include "protocol/error_response.hpp"
-#include "protocol/hex.hpp"
 #include "scenarios/bind_labels.hpp"
 #include "scenarios/check_devices.hpp"
-#include "scenarios/loader.hpp"
 #include "scenarios/device_values.hpp"
+#include "scenarios/loader.hpp"
 
 namespace slmp::scenarios {
 namespace {
 
-template <class... Ts>
-struct overloaded : Ts... {
-    using Ts::operator()...;
-};
-// clang < 17 does not deduce aggregate template arguments (P1816); say it.
-template <class... Ts>
-overloaded(Ts...) -> overloaded<Ts...>;
+using devicemodel::overloaded;
 
 // A "drive" action must name a drive the CPU has (its family's table, docs/files.md).
 void check_drives(const Scenario& s, const devicemodel::Cpu& cpu) {
@@ -77,7 +72,7 @@ void ScenarioRunner::scan(TimePoint now) {
     if (!powered_ && now_ms_ >= power_on_at_) {
         powered_ = true;
         cpu_.runtime().restart(memory);   // non-latched devices cleared, state from the switch
-        cpu_.drives().clear_locks();      // file locks do not survive a power cycle (slmp-files.md §4.8)
+        cpu_.drives().clear_locks();      // file locks do not survive a power cycle (SLMP Reference Manual §5.8)
         for (auto& l : logic_) l->stopped();
         if (station_) station_->power_on();
         info("power restored: the CPU restarted");
@@ -161,12 +156,12 @@ void ScenarioRunner::replay(Plan& plan, std::span<const std::uint8_t> frame) {
     for (std::size_t i = 0; i < replays_.size(); ++i) {
         if (!replays_[i]) continue;
         const auto& spec = *scenarios_[i].replay;
-        auto what = r.has_command ? protocol::hex4(r.command) + "/" + protocol::hex4(r.subcommand) : std::string("request");
+        auto what = r.has_command ? devicemodel::hex4(r.command) + "/" + devicemodel::hex4(r.subcommand) : std::string("request");
         if (log_)
             log_(EventLevel::Warn, "replay: the recording holds no " + what + " like this one" +
                                        plan.incoming->from() + "; " +
                                        (spec.on_miss == ReplaySpec::Miss::Simulate ? "the simulator answers it"
-                                        : spec.on_miss == ReplaySpec::Miss::EndCode ? "answered with " + protocol::hex4(protocol::raw(spec.miss_code))
+                                        : spec.on_miss == ReplaySpec::Miss::EndCode ? "answered with " + devicemodel::hex4(protocol::raw(spec.miss_code))
                                                                                     : "not answered"));
         if (spec.on_miss == ReplaySpec::Miss::EndCode)
             plan.answer = protocol::encode_error_response(r.header, r.command, r.subcommand, spec.miss_code);
@@ -214,7 +209,7 @@ void ScenarioRunner::run(const Trigger& trigger) {
                        },
                        [&](const ErrorAction& a) {
                            runtime.raise_error(memory, a.error);
-                           info("CPU error " + protocol::hex4(a.error.code) + (a.error.stop ? " (stop error)" : " (continuation error)"));
+                           info("CPU error " + devicemodel::hex4(a.error.code) + (a.error.stop ? " (stop error)" : " (continuation error)"));
                        },
                        [&](const ClearErrorAction&) {
                            // As Clear Error 1617: a stop error stays until a power cycle or Remote RESET.

@@ -4,19 +4,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "devicemodel/overloaded.hpp"
 #include "scenarios/device_values.hpp"
 #include "scenarios/runner.hpp"
 
 namespace slmp::scenarios {
 namespace {
 
-template <class... Ts>
-struct overloaded : Ts... {
-    using Ts::operator()...;
-};
-// clang < 17 does not deduce aggregate template arguments (P1816); say it.
-template <class... Ts>
-overloaded(Ts...) -> overloaded<Ts...>;
+using devicemodel::overloaded;
 
 void copy_devices(devicemodel::DeviceMemory& memory, const CopyStep& c) {
     // Read everything first: an overlapping copy moves the old values, as BMOV does.

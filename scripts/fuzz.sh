@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # scripts/fuzz.sh TARGET SECONDS — runs one libFuzzer target (tests/fuzz/) for
 # SECONDS on a copy of its committed corpus with its dictionary
-# (tests/fuzz/TARGET.dict if there is one, else tests/fuzz/slmp.dict). Builds
+# (tests/fuzz/<target>.dict if there is one, else tests/fuzz/slmp.dict). Builds
 # build-asan (clang, ASan + UBSan, SLMP_FUZZ=ON) first if needed. Prints the
 # executions and whether anything was found; on a crash exits non-zero and
 # prints the sanitizer report, the reproducer's path and a hexdump of it.

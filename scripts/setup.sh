@@ -45,7 +45,7 @@ if [ -f tests/browser/package.json ] && [ ! -d tests/browser/node_modules ]; the
   (cd tests/browser && npm ci --no-audit --no-fund --loglevel=error)
 fi
 
-# uPlot, which the build embeds into the web monitor (control/web_deps.cmake);
+# uPlot, which the build embeds into the web monitor (control/web/web_deps.cmake);
 # installed again when package-lock.json is newer than what npm ci last wrote.
 if [ ! -f control/web-deps/node_modules/.package-lock.json ] ||
    [ control/web-deps/package-lock.json -nt control/web-deps/node_modules/.package-lock.json ]; then

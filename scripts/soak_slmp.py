@@ -1,9 +1,9 @@
 """SLMP client codec for scripts/soak.py: 3E/4E frames, binary and ASCII, over
 TCP and UDP, for the commands the soak run drives. Python stdlib only.
 
-Frame layouts: ../shared/spec/slmp-frames-and-devices.md §3 (frames), §5–§6
-(device access), §7 (extended device specification) and
-slmp-labels-remote-misc.md §3–§8 (memory, extend unit, remote, self test).
+Frame layouts: SLMP Reference Manual ch. 4 (frames), §5.2 (device access),
+Appendix 1 (extended device specification) and §5.4–§5.10 (memory, extend
+unit, remote, self test); docs/sources.md.
 """
 import socket
 import struct

@@ -1,5 +1,6 @@
 #include "server/listeners.hpp"
 
+#include "devicemodel/hex.hpp"
 #include "frontends/hostlink/command_table.hpp"
 #include "frontends/jw51cm/command_table.hpp"
 #include "server/frontend_session.hpp"
@@ -39,11 +40,6 @@ std::span<const std::uint8_t> as_bytes(const std::string& text) {
     return {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()};
 }
 
-std::string hex2(std::uint8_t byte) {
-    static constexpr char kDigits[] = "0123456789ABCDEF";
-    return {kDigits[byte >> 4], kDigits[byte & 0xF]};
-}
-
 FrontEndStep step(std::size_t consumed, std::string response, const station::FrontEndCall::Delivery& delivery) {
     FrontEndStep s{false, consumed, std::move(response)};
     s.delay = delivery.delay;
@@ -70,8 +66,8 @@ station::FrontEndCall::Delivery jw51cm_report(station::FrontEndCall& call, std::
     constexpr std::size_t kCom = jw51cm::kHeaderBytes + 2;
     const bool has_com = request.size() > kCom;
     const auto* row = has_com ? jw51cm::find_command(result.command) : nullptr;
-    auto code = result.response.size() > kCom + 1 ? hex2(result.response[kCom + 1]) : std::string();
-    return call.finish(request, has_com ? hex2(result.command) : std::string(), row != nullptr,
+    auto code = result.response.size() > kCom + 1 ? devicemodel::hex2(result.response[kCom + 1]) : std::string();
+    return call.finish(request, has_com ? devicemodel::hex2(result.command) : std::string(), row != nullptr,
                        row ? row->name : std::string_view(), code, result.response);
 }
 

@@ -9,7 +9,7 @@
 #include "station/asio.hpp"
 
 #include "config/plant_config.hpp"
-#include "control/http_server.hpp"
+#include "control/http/http_server.hpp"
 #include "server/listeners.hpp"
 #include "station/station.hpp"
 

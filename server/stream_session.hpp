@@ -1,6 +1,6 @@
 // What a TcpListener needs of a connection it accepted, whatever protocol the
 // connection speaks: SLMP (tcp_session.hpp) or a front end such as the host
-// link (hostlink_session.hpp). The listener keeps its connection limits, the
+// link (frontend_session.hpp). The listener keeps its connection limits, the
 // per-address cap and its power-cut refusals the same for all of them.
 #pragma once
 

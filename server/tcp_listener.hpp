@@ -1,6 +1,6 @@
 // A TCP port. When it serves max_connections clients it closes its listening
 // socket, so further clients are refused as by a real iQ-R built-in port
-// (hardware-behaviour.md §4); it listens again when a client leaves. With a
+// (real-CPU measurements); it listens again when a client leaves. With a
 // per-address cap, a client address already at its cap has a new connection
 // accepted and closed at once (a simulator's guard; real ports have none).
 #pragma once

@@ -1,4 +1,4 @@
-// Boost.Asio, with the one include Boost 1.74 forgets: its awaitable.hpp uses
+// Boost.Asio, with the one include Boost 1.74 forgets: boost/asio/awaitable.hpp uses
 // std::exchange without <utility>. Include this instead of <boost/asio.hpp>.
 #pragma once
 

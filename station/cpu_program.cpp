@@ -186,9 +186,9 @@ void CpuProgram::powered_on() {
 
 namespace {
 
-void put_part(std::vector<std::uint8_t>& out, std::span<const std::uint8_t> bytes) {
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(bytes.size() >> (8 * i)));
-    out.insert(out.end(), bytes.begin(), bytes.end());
+void put_part(devicemodel::ByteWriter& w, std::span<const std::uint8_t> bytes) {
+    w.u32(static_cast<std::uint32_t>(bytes.size()));
+    w.bytes(bytes);
 }
 
 std::span<const std::uint8_t> as_bytes(const std::string& text) {
@@ -199,13 +199,13 @@ std::span<const std::uint8_t> as_bytes(const std::string& text) {
 
 // Layout: u32 n + file name | u32 n + the source as GX Works CSV | u32 n + engine state.
 std::vector<std::uint8_t> CpuProgram::save() const {
-    std::vector<std::uint8_t> out;
-    if (!execution_) return out;
+    devicemodel::ByteWriter w;
+    if (!execution_) return std::move(w.out);
     const auto& source = program::source_of(execution_->program());
-    put_part(out, as_bytes(source.file));
-    put_part(out, as_bytes(program::write_csv(source)));
-    put_part(out, execution_->save_state());
-    return out;
+    put_part(w, as_bytes(source.file));
+    put_part(w, as_bytes(program::write_csv(source)));
+    put_part(w, execution_->save_state());
+    return std::move(w.out);
 }
 
 void CpuProgram::restore(std::span<const std::uint8_t> bytes, const std::string& source) {

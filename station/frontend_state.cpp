@@ -13,24 +13,15 @@ namespace {
 
 constexpr char kMagic[8] = {'S', 'L', 'M', 'P', 'U', 'N', 'T', '1'};
 
-void put_u64(std::vector<std::uint8_t>& out, std::uint64_t v) {
-    for (int i = 0; i < 8; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-}
-std::uint64_t get_u64(const std::vector<std::uint8_t>& in, std::size_t at) {
-    std::uint64_t v = 0;
-    for (int i = 0; i < 8; ++i) v |= std::uint64_t{in[at + static_cast<std::size_t>(i)]} << (8 * i);
-    return v;
-}
-
 // The JW clock: the offset in seconds, then 1 and the stop instant (s since
 // the epoch) when B3 CTRL 01 stopped it, else 0 and 0. 17 bytes.
 std::vector<std::uint8_t> jw_clock(const jw51cm::ComputerLink& link) {
-    std::vector<std::uint8_t> out;
-    put_u64(out, static_cast<std::uint64_t>(link.clock_offset.count()));
-    out.push_back(link.clock_stopped ? 1 : 0);
+    devicemodel::ByteWriter w;
+    w.u64(static_cast<std::uint64_t>(link.clock_offset.count()));
+    w.u8(link.clock_stopped ? 1 : 0);
     auto stopped = link.clock_stopped ? std::chrono::duration_cast<std::chrono::seconds>(link.clock_stopped->time_since_epoch()).count() : 0;
-    put_u64(out, static_cast<std::uint64_t>(stopped));
-    return out;
+    w.u64(static_cast<std::uint64_t>(stopped));
+    return std::move(w.out);
 }
 
 [[noreturn]] void refuse(const std::string& part, std::size_t got, std::size_t want) {
@@ -81,29 +72,28 @@ void give_units(const UnitParts& parts, Station::FrontEnds& f) {
     if (mode) f.jw51cm->write_mode_ = (*mode)[0];
     if (system) f.jw51cm->system_memory = *system;
     if (program) f.jw51cm->program = *program;
-    if (clock) {
-        f.jw51cm->clock_offset = std::chrono::seconds(static_cast<std::int64_t>(get_u64(*clock, 0)));
-        if ((*clock)[8])
-            f.jw51cm->clock_stopped = std::chrono::system_clock::time_point(
-                std::chrono::seconds(static_cast<std::int64_t>(get_u64(*clock, 9))));
+    if (clock) {   // 17 bytes, checked above
+        devicemodel::ByteReader r(*clock);
+        f.jw51cm->clock_offset = std::chrono::seconds(static_cast<std::int64_t>(*r.u64()));
+        auto stopped = *r.u8();
+        auto at = static_cast<std::int64_t>(*r.u64());
+        if (stopped)
+            f.jw51cm->clock_stopped = std::chrono::system_clock::time_point(std::chrono::seconds(at));
         else
             f.jw51cm->clock_stopped.reset();
     }
 }
 
 std::vector<std::uint8_t> encode_units(const UnitParts& parts) {
-    std::vector<std::uint8_t> out(std::begin(kMagic), std::end(kMagic));
-    auto put_u32 = [&](std::uint32_t v) {
-        for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-    };
-    put_u32(static_cast<std::uint32_t>(parts.size()));
+    devicemodel::ByteWriter w;
+    w.out.assign(std::begin(kMagic), std::end(kMagic));
+    w.u32(static_cast<std::uint32_t>(parts.size()));
     for (const auto& [name, bytes] : parts) {
-        out.push_back(static_cast<std::uint8_t>(name.size()));
-        out.insert(out.end(), name.begin(), name.end());
-        put_u32(static_cast<std::uint32_t>(bytes.size()));
-        out.insert(out.end(), bytes.begin(), bytes.end());
+        w.name(name);
+        w.u32(static_cast<std::uint32_t>(bytes.size()));
+        w.bytes(bytes);
     }
-    return out;
+    return std::move(w.out);
 }
 
 UnitParts decode_units(std::span<const std::uint8_t> bytes, const std::string& source) {

@@ -56,7 +56,7 @@ StrandTask<> Inbox::serve() {
 
 // Serving the frames of one read begins. They all arrived before any was
 // answered, so they stood in the port's receive buffer together: the
-// commands-per-connection limit counts them (docs/end-codes.md).
+// commands-per-connection limit counts them (SLMP Reference Manual §3.3; docs/end-codes.md).
 void Inbox::begin_frames() {
     session_.queued_ahead = 0;
     session_.connections = connections_ ? connections_() : 1;

@@ -1,5 +1,5 @@
 // The completion handler for co_spawn: an exception that ends a coroutine is
-// logged with what stopped, never dropped (STYLE.md §6.20: no bare `detached`).
+// logged with what stopped, never dropped: no bare `detached` (docs/architecture.md, "Errors are values").
 // `on_error`, when given, runs after the log line (a session then finishes
 // itself instead of leaking its connection).
 #pragma once

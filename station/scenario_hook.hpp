@@ -1,4 +1,4 @@
-// The one hook between decode and execute (STYLE.md §6.21). Station::handle()
+// The one hook between decode and execute (docs/architecture.md). Station::handle()
 // decodes every request, TCP or UDP, once; before() asks the scenarios about
 // the decoded Request (forced end code, recorded answer, no response, close,
 // reset, power cut); the engine executes it unless the plan answers instead

@@ -138,7 +138,7 @@ Handled Station::serve(protocol::Request request, std::span<const std::uint8_t> 
     return handled;
 }
 
-// Remote RESET (slmp-labels-remote-misc.md §5.6): the CPU has restarted; as on
+// Remote RESET (SLMP Reference Manual §5.6): the CPU has restarted; as on
 // the real station every TCP connection drops and UDP sessions start afresh.
 void Station::restart() {
     log_->info("Remote RESET: CPU restarted; closing every connection");

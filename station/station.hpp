@@ -2,8 +2,8 @@
 // multi-CPU rack), the protocol engine in front of it, the scenario hook and
 // recording around the engine, the scan cycle, persistence and the activity
 // reports. Every transport hands each request to handle(). Everything runs on
-// the station's strand (station::Home), so none of this needs a lock (STYLE.md
-// §6.19); a connection's reads and writes may run on other threads meanwhile.
+// the station's strand (station::Home), so none of this needs a lock (docs/plants.md,
+// "Threads"); a connection's reads and writes may run on other threads meanwhile.
 #pragma once
 
 #include <cstdint>

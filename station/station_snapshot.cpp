@@ -65,15 +65,10 @@ void give_back(const CpuSnapshot& s, devicemodel::Cpu& cpu, const std::string& n
 
 // ---- the file form ----
 
-void put_u32(std::vector<std::uint8_t>& out, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-}
-
-void put_blob(std::vector<std::uint8_t>& out, const std::string& name, std::span<const std::uint8_t> bytes) {
-    out.push_back(static_cast<std::uint8_t>(name.size()));
-    out.insert(out.end(), name.begin(), name.end());
-    put_u32(out, static_cast<std::uint32_t>(bytes.size()));
-    out.insert(out.end(), bytes.begin(), bytes.end());
+void put_blob(devicemodel::ByteWriter& w, const std::string& name, std::span<const std::uint8_t> bytes) {
+    w.name(name);
+    w.u32(static_cast<std::uint32_t>(bytes.size()));
+    w.bytes(bytes);
 }
 
 constexpr char kFileMagic[8] = {'S', 'L', 'M', 'P', 'S', 'T', 'N', '1'};
@@ -103,12 +98,13 @@ std::vector<std::uint8_t> encode_station_file(const StationSnapshot& snapshot) {
     }
     if (!snapshot.cpus.empty())
         switch_byte.push_back(snapshot.cpus[0].run_switch == devicemodel::RunSwitch::Run ? 1 : 0);
-    std::vector<std::uint8_t> out(std::begin(kFileMagic), std::end(kFileMagic));
+    devicemodel::ByteWriter w;
+    w.out.assign(std::begin(kFileMagic), std::end(kFileMagic));
     for (const auto& [name, bytes] : snapshot.units) blobs.emplace_back("unit " + name, &bytes);
-    put_u32(out, static_cast<std::uint32_t>(blobs.size() + 1));   // the parts, then "switch"
-    for (const auto& [name, bytes] : blobs) put_blob(out, name, *bytes);
-    put_blob(out, "switch", switch_byte);
-    return out;
+    w.u32(static_cast<std::uint32_t>(blobs.size() + 1));   // the parts, then "switch"
+    for (const auto& [name, bytes] : blobs) put_blob(w, name, *bytes);
+    put_blob(w, "switch", switch_byte);
+    return std::move(w.out);
 }
 
 StationSnapshot decode_station_file(std::span<const std::uint8_t> bytes, const std::string& source) {

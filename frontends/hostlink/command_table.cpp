@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "devicemodel/hex.hpp"
+
 namespace slmp::hostlink {
 
 namespace {
@@ -86,16 +88,7 @@ std::optional<std::uint32_t> decimal(std::string_view text) {
 
 std::optional<std::uint32_t> hex(std::string_view text) {
     if (text.empty() || text.size() > 8) return std::nullopt;
-    std::uint32_t value = 0;
-    for (char c : text) {
-        unsigned digit;
-        if (c >= '0' && c <= '9') digit = static_cast<unsigned>(c - '0');
-        else if (c >= 'A' && c <= 'F') digit = static_cast<unsigned>(c - 'A' + 10);
-        else if (c >= 'a' && c <= 'f') digit = static_cast<unsigned>(c - 'a' + 10);
-        else return std::nullopt;
-        value = value << 4 | digit;
-    }
-    return value;
+    return devicemodel::parse_hex(text);
 }
 
 }  // namespace slmp::hostlink

@@ -1,5 +1,5 @@
 // The host-link command table: every fact about each command in one row
-// (ladder-motion-hostlink.md §5, §11.3). Nothing else names a command code:
+// (Ladder Motion host-link manual, docs/hostlink.md). Nothing else names a command code:
 // host_link.cpp looks the row up and calls its handler.
 #pragma once
 

@@ -1,5 +1,6 @@
 // The area reads and writes (§6.1–§6.6). Every field, count and range is
 // checked before the first write, so a refused request changes nothing.
+#include "devicemodel/hex.hpp"
 #include "frontends/hostlink/command_table.hpp"
 
 namespace slmp::hostlink {
@@ -8,13 +9,6 @@ namespace {
 
 // Data characters a response may carry: 132 bytes less `@00`, command, code, FCS, `*` CR.
 constexpr std::size_t kMaxResponseData = kMaxRecordBytes - 11;
-
-std::string hex_digits(std::uint32_t value, int width) {
-    static constexpr char digits[] = "0123456789ABCDEF";
-    std::string text(static_cast<std::size_t>(width), '0');
-    for (int i = width - 1; i >= 0; --i, value >>= 4) text[static_cast<std::size_t>(i)] = digits[value & 0xF];
-    return text;
-}
 
 bool fits(std::uint64_t start, std::uint64_t count, std::uint64_t size) { return count > 0 && start + count <= size; }
 
@@ -40,8 +34,8 @@ Answer read_words(const CommandRow& row, Context& c) {
     if (*count * width > kMaxResponseData) return Answer::error();   // §3.3: one record, never split
     std::string data;
     for (std::uint32_t i = 0; i < *count; ++i) {
-        if (row.area == Area::Vr) data += hex_digits(c.memory.long_word(*start + i), 8);
-        else data += hex_digits(c.memory.word(row.area, *start + i), 4);
+        if (row.area == Area::Vr) data += devicemodel::hex_text(c.memory.long_word(*start + i), 8);
+        else data += devicemodel::hex_text(c.memory.word(row.area, *start + i), 4);
     }
     return Answer::ok(std::move(data));
 }

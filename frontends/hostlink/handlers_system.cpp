@@ -2,18 +2,12 @@
 // refused OMRON commands, XZ and `**`, and the RE/WE, RP/WP images.
 #include <chrono>
 
+#include "devicemodel/hex.hpp"
 #include "frontends/hostlink/command_table.hpp"
 
 namespace slmp::hostlink {
 
 namespace {
-
-std::string hex_digits(std::uint32_t value, int width) {
-    static constexpr char digits[] = "0123456789ABCDEF";
-    std::string text(static_cast<std::size_t>(width), '0');
-    for (int i = width - 1; i >= 0; --i, value >>= 4) text[static_cast<std::size_t>(i)] = digits[value & 0xF];
-    return text;
-}
 
 constexpr std::size_t kMaxResponseData = kMaxRecordBytes - 11;
 constexpr std::size_t kMaxImageWords = 16;   // §6.15/§6.16: at most 16 words per record
@@ -71,7 +65,7 @@ Answer system_info(const CommandRow&, Context& c) {
         default: return Answer::error();                         // 2, 10 reserved; others unknown (inferred 01)
     }
     if (*bytes != size) return Answer::error();
-    return Answer::ok(hex_digits(value, static_cast<int>(2 * size)));
+    return Answer::ok(devicemodel::hex_text(value, static_cast<int>(2 * size)));
 }
 
 namespace {
@@ -111,7 +105,7 @@ std::string composite_item(const QqEntry& e, const AreaAccess& memory) {
     if (e.area == Area::TcUp) return memory.bit(Area::TcUp, e.channel) ? "1" : "0";
     auto word = memory.word(e.area, e.channel);
     if (e.bit >= 0) return (word >> e.bit) & 1 ? "1" : "0";
-    return hex_digits(word, 4);
+    return devicemodel::hex_text(word, 4);
 }
 
 }  // namespace
@@ -166,7 +160,7 @@ Answer read_image(const CommandRow& row, Context& c) {
         return Answer::error();
     std::string data;
     for (std::uint32_t i = 0; i < *count; ++i)
-        data += hex_digits(static_cast<std::uint32_t>(image[*address + 2 * i] << 8 | image[*address + 2 * i + 1]), 4);
+        data += devicemodel::hex_text(static_cast<std::uint32_t>(image[*address + 2 * i] << 8 | image[*address + 2 * i + 1]), 4);
     return Answer::ok(std::move(data));
 }
 

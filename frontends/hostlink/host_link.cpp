@@ -2,6 +2,7 @@
 
 #include <cctype>
 
+#include "devicemodel/hex.hpp"
 #include "frontends/hostlink/command_table.hpp"
 
 namespace slmp::hostlink {
@@ -64,9 +65,7 @@ std::string HostLink::answer(std::string_view record, LinkState& link, Result* r
         auto intercept = gate(code);
         if (intercept.kind == frontends::Intercept::Kind::Silent) return {};
         if (intercept.kind == frontends::Intercept::Kind::Answer) {
-            static constexpr char kDigits[] = "0123456789ABCDEF";
-            const char forced[] = {kDigits[intercept.code >> 4], kDigits[intercept.code & 0xF]};
-            return with_code(std::string_view(forced, 2));
+            return with_code(devicemodel::hex2(intercept.code));
         }
     }
     Context context{*this, link, AreaAccess(cpu_.memory(), options_.map), code, body.substr(5)};

@@ -1,4 +1,4 @@
-// A Ladder Motion controller's host-link port (ladder-motion-hostlink.md):
+// A Ladder Motion controller's host-link port (Ladder Motion host-link manual, docs/hostlink.md):
 // bytes in, one response record out (or silence). One object per station;
 // transports call handle() with the bytes a connection received and their
 // connection's LinkState, the way SLMP transports call Station::handle().

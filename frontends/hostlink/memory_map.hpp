@@ -1,4 +1,4 @@
-// The Ladder Motion memory map (ladder-motion-hostlink.md §4): each area the
+// The Ladder Motion memory map (Ladder Motion host-link manual, docs/hostlink.md): each area the
 // manual names — CIO channels, HR, LR, AR, DM, VR, the timer/counter present
 // values, set values and up flags — bound to a run of the station's device
 // memory (devicemodel::DeviceMemory). The binding is the alias table: DM0100 is

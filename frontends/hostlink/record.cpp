@@ -2,27 +2,20 @@
 
 #include <algorithm>
 
+#include "devicemodel/hex.hpp"
+
 namespace slmp::hostlink {
-
-namespace {
-
-std::string hex2(unsigned value) {
-    static constexpr char digits[] = "0123456789ABCDEF";
-    return {digits[(value >> 4) & 0xF], digits[value & 0xF]};
-}
-
-}  // namespace
 
 std::string fcs(std::string_view text) {
     unsigned x = 0;
     for (char c : text) x ^= static_cast<unsigned char>(c);
-    return hex2(x);
+    return devicemodel::hex2(static_cast<std::uint8_t>(x));
 }
 
 std::string csm(std::string_view text) {
     unsigned sum = 0;
     for (char c : text) sum -= static_cast<unsigned char>(c);
-    return hex2(sum & 0xFF);
+    return devicemodel::hex2(static_cast<std::uint8_t>(sum));
 }
 
 std::string close_record(std::string_view body) {

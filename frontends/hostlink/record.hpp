@@ -1,4 +1,4 @@
-// Host-link records on a byte stream (ladder-motion-hostlink.md §2–§3): the
+// Host-link records on a byte stream (Ladder Motion host-link manual, docs/hostlink.md): the
 // FCS, and cutting `@` … FCS `*` CR records — bare (touch-panel style) or
 // wrapped in STX … ETX (PC style) — out of what a transport received.
 #pragma once

@@ -1,5 +1,5 @@
 // JW names of cells for other tools (the HTTP API's device endpoints), in
-// octal as Sharp writes them (sharp-jw51cm.md §2, §5): a relay `04033`
+// octal as Sharp writes them (JW-51CM manual, docs/jw51cm.md): a relay `04033`
 // (5 octal digits), a register `09000` (N9ooo: file-0 byte 0o4000 + N·0o1000
 // + ooo) and a file address `F1:0200` (file, octal byte address) — resolved
 // through the memory map to the device that holds the cell: relay 04033 is

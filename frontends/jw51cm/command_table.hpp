@@ -1,4 +1,4 @@
-// The JW-51CM command table (sharp-jw51cm.md §3.2, §7.1, §20.3): every fact
+// The JW-51CM command table (JW-51CM manual, docs/jw51cm.md): every fact
 // about each COM in one row — its request length, the write-permission mode
 // and PLC state it needs, and its handler.
 #pragma once

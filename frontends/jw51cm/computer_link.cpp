@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "devicemodel/hex.hpp"
 #include "frontends/jw51cm/command_table.hpp"
 
 namespace slmp::jw51cm {
@@ -95,9 +96,7 @@ ComputerLink::Result ComputerLink::answer(std::span<const std::uint8_t> request,
         return result;
     }
     if (gate) {   // a scenario fault: answer a chosen RSLT, or nothing, and execute nothing
-        static constexpr char kDigits[] = "0123456789ABCDEF";
-        const char com[] = {kDigits[row.com >> 4], kDigits[row.com & 0xF]};
-        auto intercept = gate(std::string_view(com, 2));
+        auto intercept = gate(devicemodel::hex2(row.com));
         if (intercept.kind == frontends::Intercept::Kind::Silent) {
             result.kind = Result::Kind::Drop;
             return result;

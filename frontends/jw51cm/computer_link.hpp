@@ -1,4 +1,4 @@
-// A Sharp JW CPU's JW-51CM computer link (sharp-jw51cm.md): a 40-byte header,
+// A Sharp JW CPU's JW-51CM computer link (JW-51CM manual, docs/jw51cm.md): a 40-byte header,
 // ID 47/45, ATTR, COM, RSLT; no length field, so a request's length comes from
 // its COM row (§3.2). One object per station: the write-permission mode, the
 // clock, system memory and the program are the unit's and the CPU's, shared

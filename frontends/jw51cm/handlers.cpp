@@ -1,4 +1,4 @@
-// The JW-51CM commands (sharp-jw51cm.md §7.2). Every field and range is
+// The JW-51CM commands (JW-51CM manual, docs/jw51cm.md). Every field and range is
 // checked before the first write: a refused request changes nothing.
 #include <chrono>
 

@@ -1,4 +1,4 @@
-// The JW memory map (sharp-jw51cm.md §5, §20.2): data memory is byte
+// The JW memory map (JW-51CM manual, docs/jw51cm.md): data memory is byte
 // addressed by file (DSEG 0–7) and byte address; every byte a host can name
 // lives in a run of the station's device memory, so SLMP, the HTTP API,
 // snapshots and persistence reach the same cells. Bit-device runs hold 8

@@ -2,8 +2,8 @@
 // buffer memory, in words) and Extend Unit Read/Write 0601/1601 (an
 // intelligent function module's buffer memory, in bytes). The same stores are
 // reached by the extended device commands as U3E0\G / U(io)\G.
-// Spec: slmp-labels-remote-misc.md §3–§4; module numbers 0000/03FF:
-// hardware-behaviour.md §2.
+// Spec: SLMP Reference Manual §5.4–§5.5; module numbers 0000/03FF:
+// real-CPU measurements.
 #include <vector>
 
 #include "protocol/commands/handlers.hpp"
@@ -25,7 +25,7 @@ struct ByteWindow {
 
 // 0601/1601 addressing: start address = buffer word × 2 + the module's head
 // address; the module number is its start I/O ÷ 16. Module numbers 03E0–03E3
-// are the CPU buffer memory of CPU No.1–4 (hardware-behaviour.md §7), whose
+// are the CPU buffer memory of CPU No.1–4 (real-CPU measurements), whose
 // head address is 0 (chosen: the manual's table has no entry for a CPU). A
 // write to another CPU's buffer memory answers 414A: each CPU of a rack writes
 // only its own (issue 14).

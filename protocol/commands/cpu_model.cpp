@@ -1,4 +1,4 @@
-// Read Type Name 0101 — slmp-labels-remote-misc.md §5.7, hardware-behaviour.md §5.
+// Read Type Name 0101 — SLMP Reference Manual §5.6, real-CPU measurements.
 // The model name is 16 characters padded with spaces, sent as raw characters in
 // both codecs; the model code is a word.
 // 1E PC type read 15 answers one byte, the profile's frame_1e.pc_type (docs/frames.md).

@@ -1,7 +1,7 @@
 // Device Read 0401 / Device Write 1401 — subcommands 0000 0001 (Q form),
 // 0002 0003 (iQ-R form) and 0080–0083 (the same with the extended device
-// specification, Appendix 1). Spec: slmp-frames-and-devices.md §6.1–§6.2, §7;
-// limits and end codes: hardware-behaviour.md §2, §3, §6, §7.
+// specification, Appendix 1). Spec: SLMP Reference Manual §5.2, Appendix 1;
+// limits and end codes: real-CPU measurements.
 //
 // Check order (one place, both commands):
 //   1. fields (start device, points) decode — C050/C061 from the reader;

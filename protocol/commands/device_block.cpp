@@ -1,6 +1,6 @@
 // Read Block 0406 / Write Block 1406 — subcommands 0000/0002 and the extended
-// 0080/0082. Spec: slmp-frames-and-devices.md §6.7–§6.8; the mixed word+bit
-// write refusal: hardware-behaviour.md §2.
+// 0080/0082. Spec: SLMP Reference Manual §5.2; the mixed word+bit
+// write refusal: real-CPU measurements.
 //
 // A word block is n words of a word device; a bit block is n words (16 bits
 // each) of a bit device — timer and counter contacts and coils go in bit blocks.

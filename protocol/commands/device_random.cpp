@@ -1,7 +1,7 @@
 // Read Random 0403 / Write Random 1402, and Entry Monitor Device 0801 /
 // Execute Monitor 0802, which register the same device list as 0403 and read
 // it later. Subcommands 0000/0002 (and bits 0001/0003 for 1402) and their
-// extended forms 0080–0083. Spec: slmp-frames-and-devices.md §6.3–§6.6.
+// extended forms 0080–0083. Spec: SLMP Reference Manual §5.2.
 //
 // Check order: the point counts (C054/C053, ×2 for 0080/0081), then every
 // device field decodes and nothing is left over (C050/C061), then every device

@@ -1,4 +1,4 @@
-// The fields the file commands 1810-182A share (slmp-files.md §1.2, §3),
+// The fields the file commands 1810-182A share (SLMP Reference Manual §5.8),
 // read and written once for binary and ASCII through FieldReader/FieldWriter,
 // and the end codes a devicemodel::FileFault gets (docs/end-codes.md).
 #pragma once

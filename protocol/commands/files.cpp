@@ -1,4 +1,4 @@
-// File control 1810-182A (slmp-files.md §2, §6): each command written once,
+// File control 1810-182A (SLMP Reference Manual §5.8): each command written once,
 // its fields through file_fields.hpp, its effect in devicemodel::DriveSet.
 // Check order: the family's subcommand (the port's "not supported" code, C059),
 // every field and the length (C061/C050), field values (C05C, CEE1/CEE2),

@@ -1,10 +1,10 @@
 // Label access: Array Label Read/Write 041A/141A, Label Read/Write Random
 // 041C/141B (subcommand 0000). Names are resolved by the CPU's LabelTable
 // (devicemodel/labels.hpp); this file only moves fields.
-// Spec: slmp-labels-remote-misc.md §2; the end codes are chosen (the manuals
+// Spec: SLMP Reference Manual §5.3; the end codes are chosen (the manuals
 // name the conditions, never the codes) and listed in docs/labels.md:
 //   40C0  the name does not resolve: no such label or member, "Access from
-//         External Device" off (hardware-behaviour.md §2), a forbidden form
+//         External Device" off (real-CPU measurements), a forbidden form
 //         (AAA.3, K4AAA, BBB[XXX]), %n not registered or abbreviating an
 //         array, an element index past the array, a name that stops at a
 //         structure or timer;

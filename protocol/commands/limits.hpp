@@ -1,5 +1,5 @@
 // Point and block limits shared by the random, monitor and block commands
-// (slmp-frames-and-devices.md §6.3–§6.8; hardware-behaviour.md §3). A port
+// (SLMP Reference Manual §5.2; real-CPU measurements). A port
 // enforces them while it reads the request, so the decoders check them.
 #pragma once
 

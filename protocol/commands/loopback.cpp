@@ -1,4 +1,4 @@
-// Self Test 0619 — slmp-labels-remote-misc.md §7. The loopback data count is a
+// Self Test 0619 — SLMP Reference Manual §5.9. The loopback data count is a
 // word; the data are raw characters (the same bytes in binary and ASCII), 1 to
 // the profile's maximum (960). Data outside 0-9/A-F is echoed as it came (the
 // manual does not say it is refused). A count of 0 or over the maximum answers

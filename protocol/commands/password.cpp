@@ -1,4 +1,4 @@
-// Remote Password — slmp-labels-remote-misc.md §6, hardware-behaviour.md §2.
+// Remote Password — SLMP Reference Manual §5.7, real-CPU measurements.
 //   1630 Unlock / 1631 Lock: length (word), then the password as raw characters
 //   in both codes. The lock state is per connection (Session); the password and
 //   the mismatch count are the connected CPU's (devicemodel::RemotePassword).

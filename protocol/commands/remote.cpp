@@ -1,4 +1,4 @@
-// Remote Control — slmp-labels-remote-misc.md §5, hardware-behaviour.md §2.
+// Remote Control — SLMP Reference Manual §5.6, real-CPU measurements.
 //   1001 Remote RUN    mode (word: 0001 normal, 0003 forced), clear mode (byte: 00/01/02), fixed byte 00
 //   1002 Remote STOP   fixed word 0001
 //   1003 Remote PAUSE  mode (word: 0001 / 0003)
@@ -74,7 +74,7 @@ EndCode remote_reset(CommandContext& ctx) {
     if (!fixed_word_only(ctx.in)) return ctx.in.ok() ? EndCode::BadRequestContent : ctx.in.error();
     auto code = end_code_for(ctx.cpu.runtime().reset(ctx.cpu.memory()));
     ctx.restarted = code == EndCode::Ok;
-    if (ctx.restarted) ctx.cpu.drives().clear_locks();   // slmp-files.md §4.8: a CPU reset releases every lock
+    if (ctx.restarted) ctx.cpu.drives().clear_locks();   // SLMP Reference Manual §5.8: a CPU reset releases every lock
     return code;
 }
 

@@ -75,7 +75,7 @@ async function startSim(dir, drive) {
 }
 
 // ------------------------------------------------------- a tiny SLMP client --
-// 3E binary frames built by hand from slmp-files.md §6 (subcommand 0040:
+// 3E binary frames built by hand from the SLMP Reference Manual §5.8 (subcommand 0040:
 // UTF-16 names with a length, the iQ-R password as a length + characters).
 
 function frame(command, subcommand, data) {

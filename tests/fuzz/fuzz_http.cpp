@@ -1,5 +1,5 @@
-// HTTP requests -> the control API's Router::route() (control/router.hpp),
-// with every endpoint registered as control/http_server.cpp does, on a bare
+// HTTP requests -> the control API's Router::route() (control/http/router.hpp),
+// with every endpoint registered as control/endpoints/station_side.cpp does, on a bare
 // station (no sockets, no scan, no state directory). Input layout: requests
 // separated by NUL bytes, each
 //   [0] the method: byte % 5 indexes kMethods (ASCII '0'..'4' are GET, PUT,
@@ -35,11 +35,11 @@
 #include <spdlog/spdlog.h>
 
 #include "config/config.hpp"
-#include "control/api.hpp"
-#include "control/device_waits.hpp"
-#include "control/event_hub.hpp"
-#include "control/metrics.hpp"
-#include "control/router.hpp"
+#include "control/endpoints/api.hpp"
+#include "control/http/router.hpp"
+#include "control/observers/device_waits.hpp"
+#include "control/observers/event_hub.hpp"
+#include "control/observers/metrics.hpp"
 #include "devicemodel/cpu.hpp"
 #include "devicemodel/device_table.hpp"
 #include "scenarios/runner.hpp"

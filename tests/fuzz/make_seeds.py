@@ -3,7 +3,7 @@
 
 The engine seeds are whole SLMP requests for every command family, in the four
 frame shapes (3E/4E x binary/ASCII), encoded here independently of protocol/
-from the field rules of ../shared/spec/slmp-frames-and-devices.md. Seeds only
+from the field rules of the SLMP Reference Manual. Seeds only
 steer the fuzzer: a wrong one costs coverage, never a false finding.
 """
 import json

@@ -131,7 +131,7 @@ void exercise(Link& link, const Wire& w, unsigned slot) {
               f.device(DeviceForm::Q, addr("B" + hex_digits(0x100 + 0x20 * slot, 3)));
               f.u16(1);
           }))) == show(expected_response(w, word_data(w, {0x0A0A, 0x0B0B, 0x0C0C, 0x8421}))));
-    // The same mixed write is refused with C05B by an R08CPU (hardware-behaviour §2).
+    // The same mixed write is refused with C05B by an R08CPU (real-CPU measurements).
     CHECK(show(link.exchange(client::build_request(o, 0x1406, 0x0000, [&](FieldWriter& f) {
               f.u8(1);
               f.u8(1);

@@ -1,7 +1,7 @@
 // Batch write (1401) then batch read (0401) against the real server, over TCP
 // and UDP, binary and ASCII, 3E and 4E. Expected responses are spelled out
 // byte for byte (frames.hpp), and the manual's own vectors are replayed as raw
-// bytes (../shared/spec/slmp-frames-and-devices.md §3.4, §6.1, §6.2).
+// bytes (SLMP Reference Manual ch. 4, §5.2).
 #include <catch2/catch.hpp>
 
 #include <vector>

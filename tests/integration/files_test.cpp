@@ -1,4 +1,4 @@
-// File drives over TCP against the real binary (slmp-files.md §4): a folder
+// File drives over TCP against the real binary (SLMP Reference Manual §5.8): a folder
 // served with --drive, read in 1920-byte pieces, create/write/close and find
 // it in the folder byte-identical, copy, change state and date, delete,
 // directory paging over 100 files in both dialects, locks across two

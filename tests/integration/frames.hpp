@@ -2,7 +2,7 @@
 //
 // Requests are built with the project's client library (protocol/client.hpp),
 // but the EXPECTED responses are spelled out here from the manual's rules
-// (../shared/spec/slmp-frames-and-devices.md §3.2–§3.4, §5.7), independently of
+// (SLMP Reference Manual ch. 4, §5.2), independently of
 // the codec under test, so a codec bug cannot hide itself by being symmetric.
 #pragma once
 

@@ -22,7 +22,7 @@ using nlohmann::json;
 
 namespace {
 
-// XOR of the bytes, two uppercase hex digits (ladder-motion-hostlink.md §2.1).
+// XOR of the bytes, two uppercase hex digits (Ladder Motion host-link manual, docs/hostlink.md).
 std::string fcs(const std::string& body) {
     unsigned x = 0;
     for (unsigned char c : body) x ^= c;

@@ -1,7 +1,7 @@
 // Read Type Name (0101) and Self Test loopback (0619) against the real server,
 // over TCP and UDP, binary and ASCII, 3E and 4E.
-// Layouts: ../shared/spec/slmp-labels-remote-misc.md §5.7 and §7;
-// R08CPU name and code: ../shared/spec/hardware-behaviour.md §5.
+// Layouts: SLMP Reference Manual §5.6, §5.9;
+// R08CPU name and code: real-CPU measurements.
 #include <catch2/catch.hpp>
 
 #include <memory>

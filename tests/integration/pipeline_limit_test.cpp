@@ -1,4 +1,4 @@
-// Commands per connection (spec §2.3; docs/end-codes.md): a pipelined burst
+// Commands per connection (SLMP Reference Manual §3.3; docs/end-codes.md): a pipelined burst
 // over a real TCP socket. On the R08CPU profile (buffer 32) one connection may
 // have 1 + 32 = 33 requests waiting; the 34th and later of the burst get CEE0,
 // in order, with their serials, and execute nothing. With two connections open

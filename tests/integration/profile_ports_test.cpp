@@ -1,5 +1,5 @@
 // What each kind of port accepts, as seen from a socket
-// (../shared/spec/hardware-behaviour.md §4, §5, §6): 4E silence on QnU/FX5U,
+// (real-CPU measurements): 4E silence on QnU/FX5U,
 // iQ-R subcommands refused with C059/C061 or a closed connection, the model
 // name per profile, range errors.
 #include <catch2/catch.hpp>

@@ -2,7 +2,7 @@
 // commands slmp-sim does not serve yet (remote control, password, random
 // access) and the frame options (route, 4E serial, iQ-R form, --password).
 // Expected frames are spelled out from the manuals' examples
-// (slmp-labels-remote-misc.md §1.6, §5, §6; slmp-frames-and-devices.md §6.3–§6.4),
+// (SLMP Reference Manual ch. 5, §5.6, §5.7; SLMP Reference Manual §5.2),
 // independently of the encoder under test.
 #include <catch2/catch.hpp>
 

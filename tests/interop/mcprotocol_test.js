@@ -126,7 +126,7 @@ async function check(name, body) {
   }
 }
 
-// Expected frames, spelled out from the manual (slmp-frames-and-devices.md §3).
+// Expected frames, spelled out from the manual (SLMP Reference Manual ch. 4).
 const OK_BINARY = 'D0 00 00 FF FF 03 00 02 00 00 00';
 const OK_ASCII = 'D00000FF03FF0000040000';
 // mcprotocol writes ASCII hex digits in lower case ("00ff03ff00"); the manual

@@ -1,4 +1,4 @@
-// Instruction groups of spec §5 against their tables: wrap-around, remainder
+// Instruction groups of docs/program.md "Instructions" against their tables: wrap-around, remainder
 // signs, digit designation, index range errors, P forms, floats, strings,
 // shifts, data processing.
 #include <catch2/catch.hpp>

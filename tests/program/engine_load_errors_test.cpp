@@ -154,7 +154,7 @@ TEST_CASE("load errors: structure, availability, operands", "[program][engine][l
     CHECK(one("LD X0 · OUT C1 K1 · LD X1 · OUT C1 K2 · END") ==
           "test.il: line 4: C1 has OUT at lines 2 and 4 (set allow_double_timer_coils to permit)");
     CHECK(one("LD X0 · OUTH C1 K1 · END") == "test.il: line 2: 'OUTH' drives timers only; count with OUT C1");
-    // availability by family (spec §5.12)
+    // availability by family (docs/program.md "Instructions")
     CHECK(one("LDPI X0 · OUT Y0 · END", q26()) == "test.il: line 1: 'LDPI' is no instruction of Q26UDEHCPU (family QnU)");
     CHECK(one("LDPI X0 · OUT Y0 · END") == "(loads)");
     CHECK(one("LD X0 · OUTHS T0 K1 · END") == "test.il: line 2: 'OUTHS' is no instruction of R08CPU (family iQ-R)");

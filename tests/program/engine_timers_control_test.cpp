@@ -1,4 +1,4 @@
-// Timers and counters (spec §4.1, §4.2, §5.2), edge memory (§4.3), MC/MCR
+// Timers and counters (docs/program.md "Timers", "Instructions"), edge memory (§4.3), MC/MCR
 // (§5.1) and program control (§5.10), watchdog (§3.4), engine state.
 #include <catch2/catch.hpp>
 

@@ -2,8 +2,8 @@
 // Random 0403/1402, Entry Monitor 0801/0802, Read/Write Block 0406/1406,
 // Memory 0613/1613, Extend Unit 0601/1601 — and for the extended device
 // specification of Appendix 1 (subcommands 008x). Like fixtures.hpp they are
-// written from the manual's layouts (slmp-frames-and-devices.md §6.3–§6.8, §7;
-// slmp-labels-remote-misc.md §3–§4), independently of protocol/, so a codec bug
+// written from the manual's layouts (SLMP Reference Manual §5.2, Appendix 1;
+// SLMP Reference Manual §5.4–§5.5), independently of protocol/, so a codec bug
 // cannot hide by being symmetric.
 //
 // Also a Connection: one Session kept across requests (Entry Monitor 0801

@@ -184,7 +184,7 @@ inline Payload bits(const std::vector<int>& points) {
 }
 
 // Error information after an end code: route of the answering station, then
-// the request's command and subcommand (spec §3.2.4, hardware-behaviour §1).
+// the request's command and subcommand (SLMP Reference Manual ch. 4, real-CPU measurements).
 inline Payload error(std::uint16_t end_code, std::uint16_t command, std::uint16_t subcommand, Route route = {}) {
     return word(end_code) + Payload{le(route.network, 1), hexn(route.network, 2)} +
            Payload{le(route.station, 1), hexn(route.station, 2)} + word(route.module_io) +

@@ -1,5 +1,5 @@
 // Test-side encoders for the label commands 041A/141A/041C/141B, written from
-// the layouts of slmp-labels-remote-misc.md §2.7–§2.10 independently of
+// the layouts of the SLMP Reference Manual §5.3 independently of
 // protocol/ (a codec bug cannot hide by being symmetric), and a CPU with
 // labels declared through the configuration parser.
 #pragma once

@@ -1,7 +1,7 @@
 // slmp-bench's pure parts (docs/bench.md): --targets parsing, the CPU time
 // read from /proc/PID/stat, and the baseline server's framing and answers —
 // bytes in, bytes out, each answer spelled out from the frame layout
-// (../shared/spec/slmp-frames-and-devices.md §3.1–§3.3), not from the code.
+// (SLMP Reference Manual ch. 4), not from the code.
 #include <catch2/catch.hpp>
 
 #include <string>

@@ -1,7 +1,7 @@
-// Buffer memory by address (slmp-labels-remote-misc.md §3–§4): Memory Read/Write
+// Buffer memory by address (SLMP Reference Manual §5.4–§5.5): Memory Read/Write
 // 0613/1613 on the own station's buffer memory and Extend Unit Read/Write
 // 0601/1601 on a module's, with the manuals' examples byte for byte, the limits,
-// the module numbers real CPUs refuse (hardware-behaviour.md §2), and proof that
+// the module numbers real CPUs refuse (real-CPU measurements), and proof that
 // 0613 and U3E0\G, 0601 and U\G are one store each.
 #include "support/device_commands.hpp"
 
@@ -164,7 +164,7 @@ TEST_CASE("0601/1601 limits and module numbers", "[buffer][limits]") {
         CHECK(wire.exchange(cpu, extend_unit_write_req(0x1008, 3, std::vector<std::uint8_t>(1921, 1))) ==
               wire.expect(error(0xC051, 0x1601, 0x0000)));
     }
-    SECTION("module 0000 -> 4043, 03FF -> 4080 (hardware-behaviour §2), absent -> 4043") {
+    SECTION("module 0000 -> 4043, 03FF -> 4080 (real-CPU measurements), absent -> 4043") {
         CHECK(wire.exchange(cpu, extend_unit_read_req(0x1008, 2, 0x0000)) ==
               wire.expect(error(0x4043, 0x0601, 0x0000)));
         CHECK(wire.exchange(cpu, extend_unit_read_req(0x1008, 2, 0x03FF)) ==
@@ -192,7 +192,7 @@ TEST_CASE("0601/1601 limits and module numbers", "[buffer][limits]") {
     CHECK(q62da(cpu).value(spec_of("G"), 0) == 0);
 }
 
-TEST_CASE("0601 with module number 03E0 reaches the CPU buffer memory (hardware-behaviour §7)", "[buffer]") {
+TEST_CASE("0601 with module number 03E0 reaches the CPU buffer memory (hardware-behaviour §7)", "[buffer]") {   // signposts: allow (the name ctest lists)
     auto cpu = make_cpu("R08CPU");
     auto wire = GENERATE(kBinary3E, kAscii3E);
     cpu.memory().set_value(spec_of("G"), 5, 0xBEEF);

@@ -1,7 +1,7 @@
 // The command table's flags against the specs' tables: the request path asks
 // these flags and nothing else, so a wrong flag is a wrong answer on the wire.
-// Sources: slmp-labels-remote-misc.md §5–§8 (remote, password, clear error),
-// Appendix 3 (commands that cannot reach CPU No.2–4), hardware-behaviour.md §4
+// Sources: SLMP Reference Manual §5.6–§5.10 (remote, password, clear error),
+// Appendix 3 (commands that cannot reach CPU No.2–4), real-CPU measurements
 // (what each port family refuses).
 #include "protocol/command_table.hpp"
 
@@ -56,7 +56,7 @@ TEST_CASE("command table: device commands have a decoder; the write ones are fla
     // operations that clear devices (RUN with a clear mode, Latch Clear, RESET).
     CHECK(commands_where(&CommandSpec::writes) ==
           std::set<std::uint16_t>{0x1001, 0x1005, 0x1006, 0x1401, 0x1402, 0x1406, 0x141A, 0x141B, 0x1601, 0x1613,
-                                  // the file commands system protect blocks (slmp-files.md §5)
+                                  // the file commands system protect blocks (SLMP Reference Manual §5.8)
                                   0x1820, 0x1822, 0x1824, 0x1825, 0x1826, 0x1829});
 }
 
@@ -64,7 +64,7 @@ TEST_CASE("command table: the device form and the extended layout follow the sub
     for (const auto& row : all_commands()) {
         INFO(std::hex << row.command << "/" << row.subcommand);
         if (!row.device_command()) {
-            // The file commands' dialects (slmp-files.md §2.1): 0000 Q/L, 0004 L, 0040 iQ-R.
+            // The file commands' dialects (SLMP Reference Manual §5.8): 0000 Q/L, 0004 L, 0040 iQ-R.
             const bool file_command = row.command >= 0x1810 && row.command <= 0x182A;
             CHECK((row.subcommand == 0x0000 || (file_command && (row.subcommand == 0x0004 || row.subcommand == 0x0040))));
             continue;
@@ -76,9 +76,9 @@ TEST_CASE("command table: the device form and the extended layout follow the sub
     }
 }
 
-TEST_CASE("command table: which port families refuse which commands (hardware-behaviour.md §4)", "[table]") {
+TEST_CASE("command table: which port families refuse which commands (hardware-behaviour.md §4)", "[table]") {   // signposts: allow (the name ctest lists)
     CHECK(commands_refused_by(Family::IQR).empty());
-    // Label commands: iQ-R CPUs only (slmp-labels-remote-misc.md §12).
+    // Label commands: iQ-R CPUs only (SLMP Reference Manual §5.1).
     const std::set<std::uint16_t> labels{0x041A, 0x041C, 0x141A, 0x141B};
     CHECK(commands_refused_by(Family::QJ71E71) == labels);
     std::set<std::uint16_t> built_in_q_l{0x0101, 0x0406, 0x0613, 0x0619, 0x1406, 0x1613};

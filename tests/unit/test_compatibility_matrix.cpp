@@ -56,7 +56,7 @@ Payload password_req(std::uint16_t command, const std::string& pw) {
     return word(command) + word(0x0000) + word(static_cast<std::uint16_t>(pw.size())) + Payload{hex(text(pw)), pw};
 }
 
-// File commands (slmp-files.md §6) against "A.CSV" on drive 2, which cpu_for
+// File commands (SLMP Reference Manual §5.8) against "A.CSV" on drive 2, which cpu_for
 // puts on every family with drives: names, passwords and fixed fields in the
 // row's dialect (0040: UTF-16 and a length-prefixed password).
 Payload file_name(std::uint16_t sub, const std::string& name) {

@@ -9,7 +9,7 @@
 // A bit device's bit view (0401 bit units, 1402 bits) and word view (16 devices
 // a word, the lowest in bit 0) must agree. A command that may not name a device
 // must answer 4030 — and only for the devices the spec lists (§6.1–§6.8,
-// corrected by hardware-behaviour.md §6–§7: LZ is read and written by 0401/1401;
+// corrected by real-CPU measurements: LZ is read and written by 0401/1401;
 // S is read-only). The random generator is seeded: every run is the same run.
 #include <algorithm>
 #include <random>
@@ -333,7 +333,7 @@ TEST_CASE("Values written by any command read back identically through every oth
 }
 
 TEST_CASE("A long timer's 4-word view carries the coil (b0) and contact (b1) written by 1402", "[consistency]") {
-    // LTS/LTC/LSTS/LSTC cannot be read directly (4030, hardware-behaviour §7): LTN's
+    // LTS/LTC/LSTS/LSTC cannot be read directly (4030, real-CPU measurements): LTN's
     // status word is the only way to see them.
     auto cpu = make_cpu("R08CPU");
     auto wire = GENERATE(kBinary3E, kAscii3E);

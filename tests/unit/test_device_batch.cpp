@@ -1,5 +1,5 @@
 // Device Read 0401 / Device Write 1401 on an R08CPU: the worked examples of
-// slmp-frames-and-devices.md §3.4 (A–C) and §6.1–§6.2 (R1–R3, W1–W3), each in
+// SLMP Reference Manual ch. 4 (A–C) and §5.2 (R1–R3, W1–W3), each in
 // 3E and 4E, binary and ASCII; then a round trip for every device kind.
 #include "support/fixtures.hpp"
 

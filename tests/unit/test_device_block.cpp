@@ -1,8 +1,8 @@
-// Read Block 0406 / Write Block 1406 (slmp-frames-and-devices.md §6.7–§6.8):
+// Read Block 0406 / Write Block 1406 (SLMP Reference Manual §5.2):
 // Example RB byte for byte (the response values are the manual's missing
 // figure, so they are chosen here), Write Block with the same blocks, block
 // counts and totals per profile (1406 adds 4 or 9 per block; R08CPU's observed
-// 951 words, hardware-behaviour.md §3), the mixed word+bit write each profile
+// 951 words, real-CPU measurements), the mixed word+bit write each profile
 // refuses (§2), devices the commands may not name and wrong block kinds.
 #include "support/device_commands.hpp"
 
@@ -119,7 +119,7 @@ TEST_CASE("1406 with word and bit blocks in one request: each profile's answer",
         const char* profile;
         std::uint16_t code;  // 0: written
     };
-    // hardware-behaviour.md §2: R08CPU C05B, R120PCPU C056, FX5UC C061; Q/L ports write it.
+    // real-CPU measurements: R08CPU C05B, R120PCPU C056, FX5UC C061; Q/L ports write it.
     auto c = GENERATE(Case{"R08CPU", 0xC05B}, Case{"R120PCPU", 0xC056}, Case{"FX5U-32MR", 0xC061},
                       Case{"Q06UDVCPU-QJ71E71", 0});
     auto wire = GENERATE(kBinary3E, kAscii3E);

@@ -1,8 +1,8 @@
 // Read Random 0403 / Write Random 1402: the worked examples RR and WR1 of
-// slmp-frames-and-devices.md §6.3–§6.4 byte for byte (binary and ASCII, 3E and
+// SLMP Reference Manual §5.2 byte for byte (binary and ASCII, 3E and
 // 4E), WR2 (whose values the manual does not give) with chosen values, then
 // the limits of every profile one point below, at and above
-// (hardware-behaviour.md §3), the devices the commands may not name, bit units
+// (real-CPU measurements), the devices the commands may not name, bit units
 // on word devices, and ranges — with memory unchanged after every rejected write.
 #include "support/device_commands.hpp"
 
@@ -117,7 +117,7 @@ TEST_CASE("§6.4 Example WR2 (values chosen): word and dword Write Random, read 
 }
 
 // ---------------------------------------------------------------------------
-// Limits (hardware-behaviour.md §3), written down here rather than read from the profiles.
+// Limits (real-CPU measurements), written down here rather than read from the profiles.
 
 namespace {
 
@@ -289,7 +289,7 @@ TEST_CASE("0403 refuses the long contacts and coils with 4030, 1402 names anythi
     cpu.memory().set_value(spec_of("LCN"), 3, 0x12345678);
     CHECK(wire.exchange(cpu, random_read_req(0x0002, {device(Form::IQR, "LCN3")}, {device(Form::IQR, "LCN3")})) ==
           wire.expect(ok(word(0x5678) + dword(0x12345678))));
-    // S is read-only over the built-in port (hardware-behaviour §7): 4030, nothing written.
+    // S is read-only over the built-in port (real-CPU measurements): 4030, nothing written.
     check_refused(cpu, wire,
                   random_write_bits_req(0x0001, {{device(Form::Q, "M0"), true}, {device(Form::Q, "S0"), true}}), 0x4030,
                   0x1402, 0x0001);

@@ -1,4 +1,4 @@
-// The device table against the manual's code list (slmp-frames-and-devices.md
+// The device table against the manual's code list (SLMP Reference Manual
 // §5.2), and address text parsing/printing through it.
 #include "devicemodel/device_table.hpp"
 
@@ -26,7 +26,7 @@ struct Row {
 constexpr Radix H = Radix::Hex, De = Radix::Dec;
 constexpr Unit B = Unit::Bit, W = Unit::Word, DW = Unit::DoubleWord;
 
-// ZR: the manuals say hex; iQ-R numbers it in decimal (hardware-behaviour §7),
+// ZR: the manuals say hex; iQ-R numbers it in decimal (real-CPU measurements),
 // and the table follows the CPU (a profile can switch its ASCII form to hex).
 const Row kSpec[] = {
     {"SM", "SM**", "SM", 0x0091, 0x91, De, B},   {"SD", "SD**", "SD", 0x00A9, 0xA9, De, W},
@@ -49,7 +49,7 @@ const Row kSpec[] = {
     {"LZ", "LZ**", "", 0x0062, -1, De, DW},      {"R", "R***", "R*", 0x00AF, 0xAF, De, W},
     {"ZR", "ZR**", "ZR", 0x00B0, 0xB0, De, W},   {"RD", "RD**", "", 0x002C, -1, De, W},
     // S is not in §5.2 (JP: "cannot be specified in SLMP"), but real CPUs answer
-    // it (hardware-behaviour §7: readable, write -> 4030); code 98H as in MC protocol.
+    // it (real-CPU measurements: readable, write -> 4030); code 98H as in MC protocol.
     {"S", "S***", "S*", 0x0098, 0x98, De, B},
 };
 
@@ -80,7 +80,7 @@ TEST_CASE("device table matches the manual's code list", "[device_table]") {
 
 TEST_CASE("buffer-memory devices exist only behind an extension", "[device_table]") {
     // Codes from the English iQ-R manual (G 00ABH/ABH, HG 002EH); as plain devices
-    // real CPUs answer C05B (hardware-behaviour.md §7).
+    // real CPUs answer C05B (real-CPU measurements).
     const auto* g = find_by_symbol("G");
     REQUIRE(g != nullptr);
     CHECK(g->extension_only);

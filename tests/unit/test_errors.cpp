@@ -28,7 +28,7 @@ void seed(devicemodel::Cpu& cpu) {
 
 }  // namespace
 
-TEST_CASE("error frames: the shapes of spec §3.4 D and hardware-behaviour §1", "[errors][spec]") {
+TEST_CASE("error frames: the shapes of spec §3.4 D and hardware-behaviour §1", "[errors][spec]") {   // signposts: allow (the name ctest lists)
     auto cpu = make_cpu("R08CPU");
     SECTION("3E binary and ASCII, unsupported subcommand 0401/0004 -> C059") {
         auto out = run(cpu, bytes("50 00 00 FF FF 03 00 0C 00 10 00 01 04 04 00 64 00 00 A8 03 00"));
@@ -40,7 +40,7 @@ TEST_CASE("error frames: the shapes of spec §3.4 D and hardware-behaviour §1",
         auto asc = run(cpu, text("500000FF03FF000018001004010004D*0001000003"));
         CHECK(str(asc.response) == "D00000FF03FF000016C05900FF03FF0004010004");
     }
-    SECTION("4E binary, serial 0001, 0401/0002 D10240 -> 4031 (hardware-behaviour §1 shape)") {
+    SECTION("4E binary, serial 0001, 0401/0002 D10240 -> 4031 (real-CPU measurements)") {
         auto out = run(cpu, bytes("54 00 01 00 00 00 00 FF FF 03 00 0E 00 10 00 01 04 02 00 00 28 00 00 A8 00 01 00"));
         CHECK(hex(out.response) == "D4 00 01 00 00 00 00 FF FF 03 00 0B 00 31 40 00 FF FF 03 00 01 04 02 00");
         auto asc = run(cpu, text("54000001000000FF03FF00001C001004010002D***000102400001"));
@@ -74,7 +74,7 @@ TEST_CASE("unsupported commands and subcommands -> C059", "[errors]") {
     }
 }
 
-TEST_CASE("route checks (engine.cpp check_route, codes chosen)", "[errors]") {
+TEST_CASE("route checks (engine.cpp check_route, codes chosen)", "[errors]") {   // signposts: allow (the name ctest lists)
     auto cpu = make_cpu("R08CPU");
     seed(cpu);
     auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
@@ -123,7 +123,7 @@ TEST_CASE("device checks in order (device_batch.cpp)", "[errors]") {
         expect_rejected(cpu, wire, {"01 14 00 00 64 00 00 01 01 00 01 00", "14010000Q*00010000010001"}, 0xC05B, 0x1401,
                         0x0000);
     }
-    SECTION("2. G and HG named as plain devices -> C05B (hardware-behaviour §7)") {
+    SECTION("2. G and HG named as plain devices -> C05B (real-CPU measurements)") {
         const Payload g_q{"01 04 00 00 0A 00 00 AB 01 00", "04010000G*0000100001"};
         CHECK(wire.exchange(cpu, g_q) == wire.expect(error(0xC05B, 0x0401, 0x0000)));
         const Payload hg_iqr{"01 04 02 00 14 00 00 00 2E 00 01 00", "04010002HG**000000200001"};

@@ -1,5 +1,5 @@
-// The extended device specification (subcommands 008x, slmp-frames-and-devices.md
-// §7 / Appendix 1): the worked examples J1, U1, U3E0, JZ, DZ, @D0 and @D0Z2 byte
+// The extended device specification (subcommands 008x, SLMP Reference Manual
+// Appendix 1): the worked examples J1, U1, U3E0, JZ, DZ, @D0 and @D0Z2 byte
 // for byte (binary and ASCII, 3E and 4E), then what each form reaches —
 // a network's link devices, a module's buffer memory, the CPU buffer memory —
 // index registers Z/LZ, indirect "@", and the errors.
@@ -317,7 +317,7 @@ TEST_CASE("Extended-form errors", "[extended][errors]") {
         CHECK(wire.exchange(cpu, read1(0x0082, ext_device(Form::IQR, "W0", cpu_buffer()))) ==
               wire.expect(error(0xC05B, 0x0401, 0x0082)));
     }
-    SECTION("G and HG named without an extension -> C05B (hardware-behaviour §7)") {
+    SECTION("G and HG named without an extension -> C05B (real-CPU measurements)") {
         CHECK(wire.exchange(cpu, read1(0x0082, ext_device(Form::IQR, "G0"))) ==
               wire.expect(error(0xC05B, 0x0401, 0x0082)));
         CHECK(wire.exchange(cpu, read_words_req(Form::IQR, "G0", 1)) == wire.expect(error(0xC05B, 0x0401, 0x0002)));

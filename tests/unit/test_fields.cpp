@@ -1,5 +1,5 @@
-// FieldReader / FieldWriter: the encoding rules of slmp-frames-and-devices.md
-// §3.3 and §5.3–§5.7, with the manual's own examples, in both codecs.
+// FieldReader / FieldWriter: the encoding rules of the SLMP Reference Manual
+// ch. 4 and §5.2, with the manual's own examples, in both codecs.
 #include "protocol/fields.hpp"
 
 #include "support/fixtures.hpp"

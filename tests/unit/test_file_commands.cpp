@@ -1,4 +1,4 @@
-// File control 1810-182A: every canonical vector of slmp-files.md §6,
+// File control 1810-182A: every canonical vector of the SLMP Reference Manual §5.8,
 // byte-exact in binary and ASCII, 3E and 4E, plus the refusals (family,
 // names that would leave the drive, locks, protection, capacity, Q/L RUN).
 // End codes are the choices in docs/end-codes.md.

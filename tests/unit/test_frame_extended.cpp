@@ -1,5 +1,5 @@
-// The station-number-extended frame (68 00 / E8 00, binary only; spec §1.1,
-// §3.1.1, §3.1.6, §3.2.5) on the RJ71GN11-T2 profile, byte-exact; ports
+// The station-number-extended frame (68 00 / E8 00, binary only; SLMP Reference
+// Manual §2.1, ch. 4) on the RJ71GN11-T2 profile, byte-exact; ports
 // without it (an R08CPU's built-in port) do not know the frame and skip it.
 #include "support/fixtures.hpp"
 

@@ -1,5 +1,5 @@
 // Frame headers (scan_frame, encode_frame) and the client-side builders, against
-// the complete-frame vectors of slmp-frames-and-devices.md §3.4 (A–D).
+// the complete-frame vectors of the SLMP Reference Manual ch. 4 (A–D).
 #include "protocol/client.hpp"
 #include "protocol/frame.hpp"
 #include "protocol/message.hpp"
@@ -29,7 +29,7 @@ FrameScan scan(const Bytes& data, Direction direction = Direction::Request,
 
 }  // namespace
 
-TEST_CASE("spec §3.4 byte tables agree with the vectors", "[frames]") {
+TEST_CASE("spec §3.4 byte tables agree with the vectors", "[frames]") {   // signposts: allow (the name ctest lists)
     // ASCII vector B, byte by byte as printed in the spec.
     CHECK(hex(kReqB) ==
           "35 30 30 30 30 30 46 46 30 33 46 46 30 30 30 30 31 38 30 30 31 30 30 34 30 31 30 30 30 30 44 2A 30 30 "

@@ -1,5 +1,5 @@
 // The Ladder Motion host link, bytes in and bytes out: every worked example
-// and consolidated test vector of ladder-motion-hostlink.md §6.7/§9 (FCS
+// and consolidated test vector of the Ladder Motion host-link manual, docs/hostlink.md (FCS
 // included), the framing rules of §2–§3 and the error rules of §8.
 #include <catch2/catch.hpp>
 

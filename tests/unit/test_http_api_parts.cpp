@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "config/config.hpp"
-#include "control/device_view.hpp"
-#include "control/metrics.hpp"
-#include "control/router.hpp"
+#include "control/endpoints/device_view.hpp"
+#include "control/http/router.hpp"
+#include "control/observers/metrics.hpp"
 #include "station/station.hpp"
 
 using namespace slmp::station;

@@ -1,5 +1,5 @@
 // The Sharp JW-51CM computer link, bytes in and bytes out: every consolidated
-// test vector of sharp-jw51cm.md §18 that the front end covers (1–18, 27–29)
+// test vector of the JW-51CM manual, docs/jw51cm.md that the front end covers (1–18, 27–29)
 // byte-exact with the 40-byte header, the COM-driven framing of §3.2, the
 // write-permission mode, the run/stop owner and the RSLT codes of §10.
 #include <catch2/catch.hpp>

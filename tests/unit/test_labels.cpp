@@ -1,4 +1,4 @@
-// Label access 041A/141A/041C/141B (slmp-labels-remote-misc.md §2): every
+// Label access 041A/141A/041C/141B (SLMP Reference Manual §5.3): every
 // worked example byte for byte in all four frame shapes, round trips of every
 // data type through both command pairs with the device view checked by 0401,
 // the error table (end code and memory unchanged), and the families that

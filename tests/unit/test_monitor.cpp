@@ -1,5 +1,5 @@
-// Entry Monitor Device 0801 / Execute Monitor 0802 (slmp-frames-and-devices.md
-// §6.5–§6.6): Example EM byte for byte, 0802's answer (equal to Example RR's,
+// Entry Monitor Device 0801 / Execute Monitor 0802 (SLMP Reference Manual
+// §5.2): Example EM byte for byte, 0802's answer (equal to Example RR's,
 // inferred), the registration's lifetime per connection (Session), limits per
 // profile, and the devices 0801 may not name.
 #include "support/device_commands.hpp"

@@ -1,4 +1,4 @@
-// A multi-CPU system (slmp-frames-and-devices.md §9 / Appendix 3): CPU No.1–4
+// A multi-CPU system (SLMP Reference Manual, Appendix 3): CPU No.1–4
 // are reached through one port with module I/O 03E0–03E3 (03FF = the CPU of
 // the port). Each CPU has its own memory; U3E1\G reaches CPU No.2's buffer
 // memory from anywhere, but only CPU No.2 writes it (414A for the others); Entry/Execute Monitor, Memory 0613/1613, Self Test 0619

@@ -1,5 +1,5 @@
 // The operating-state machine as a table: every (state, switch, holder,
-// command, mode, client) combination of slmp-labels-remote-misc.md §5.8 with the
+// command, mode, client) combination of the SLMP Reference Manual §5.6 with the
 // refusal (end code chosen in protocol/commands/remote.cpp) and the resulting
 // state and holder. A refused operation must leave state and holder unchanged.
 #include <catch2/catch.hpp>

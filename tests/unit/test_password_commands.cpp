@@ -1,5 +1,5 @@
-// Remote Password Unlock 1630 / Lock 1631 — slmp-labels-remote-misc.md §6,
-// hardware-behaviour.md §2 (C201 while locked, C810 wrong password), byte-exact
+// Remote Password Unlock 1630 / Lock 1631 — SLMP Reference Manual §5.7,
+// real-CPU measurements (C201 while locked, C810 wrong password), byte-exact
 // in binary and ASCII. The lock state is per connection (Session).
 #include "support/fixtures.hpp"
 

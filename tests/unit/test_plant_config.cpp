@@ -4,7 +4,7 @@
 #include "support/fixtures.hpp"
 
 #include "config/plant_config.hpp"
-#include "control/station_side.hpp"
+#include "control/endpoints/station_side.hpp"
 
 using namespace slmp;
 using config::parse_plant_config;

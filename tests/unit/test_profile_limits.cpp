@@ -1,4 +1,4 @@
-// What differs between CPUs (hardware-behaviour.md §3–§6): point limits and
+// What differs between CPUs (real-CPU measurements): point limits and
 // their end codes, the out-of-range code at the end of every device, R/ZR
 // start-only checks, and how each port refuses frames and subcommands.
 // The expected values are written down here from the spec, not read from the
@@ -223,7 +223,7 @@ TEST_CASE("out of range at the end of every device", "[profiles][range]") {
     }
 }
 
-TEST_CASE("R and ZR: iQ-R checks the start only (hardware-behaviour §6)", "[profiles][range]") {
+TEST_CASE("R and ZR: iQ-R checks the start only (hardware-behaviour §6)", "[profiles][range]") {   // signposts: allow (the name ctest lists)
     auto cpu = make_cpu("R08CPU");
     auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
     auto form = GENERATE(Form::Q, Form::IQR);
@@ -268,7 +268,7 @@ TEST_CASE("R and ZR: Q/L CPUs check the whole span", "[profiles][range]") {
     CHECK(wire.exchange(cpu, read_words_req(Form::Q, address(zr, zr_last), 2)) == wire.expect(error(0xC056, 0x0401, 0x0000)));
 }
 
-TEST_CASE("how each port refuses frames and subcommands (hardware-behaviour §4)", "[profiles][refusals]") {
+TEST_CASE("how each port refuses frames and subcommands (hardware-behaviour §4)", "[profiles][refusals]") {   // signposts: allow (the name ctest lists)
     SECTION("QnU and L built-in: a 4E request gets no answer") {
         auto name = GENERATE(as<std::string>{}, "Q26UDEHCPU", "L26CPU-BT");
         auto cpu = make_cpu(name);

@@ -1,6 +1,6 @@
 // The built-in profiles (config/profiles/*.json) and "extends". Identities are
-// the model-code list of slmp-labels-remote-misc.md §5.7 and hardware-behaviour
-// §5; which ports answer 0101 is hardware-behaviour §4 (QnU and L built-in
+// the model-code list of the SLMP Reference Manual §5.6 and real-CPU
+// measurements; which ports answer 0101, real-CPU measurements (QnU and L built-in
 // ports refuse it with C059).
 #include <filesystem>
 #include <fstream>

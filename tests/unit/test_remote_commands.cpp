@@ -1,5 +1,5 @@
 // Remote Control 1001/1002/1003/1005/1006 and Clear Error 1617, byte-exact in
-// binary and ASCII, 3E and 4E: slmp-labels-remote-misc.md §1.6 (framed
+// binary and ASCII, 3E and 4E: SLMP Reference Manual ch. 5 (framed
 // examples), §5.2–§5.6 (request data), §5.8 (the state rules), §8.
 // End codes where the manuals are silent are the choices in docs/cpu-runtime.md.
 #include "support/fixtures.hpp"

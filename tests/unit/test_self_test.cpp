@@ -1,4 +1,4 @@
-// Self Test (loopback) 0619 — slmp-labels-remote-misc.md §7. The manual gives the
+// Self Test (loopback) 0619 — SLMP Reference Manual §5.9. The manual gives the
 // request and response data for "ABCDE"; whole frames are built around them.
 #include "support/fixtures.hpp"
 
@@ -52,7 +52,7 @@ TEST_CASE("0619 data counts", "[self_test]") {
     SECTION("count 5, 6 bytes of data -> C061") {
         CHECK(wire.exchange(cpu, loopback(5, "ABCDEF")) == wire.expect(error(0xC061, 0x0619, 0x0000)));
     }
-    SECTION("characters outside 0-9/A-F are echoed (the lenient choice, spec §7)") {
+    SECTION("characters outside 0-9/A-F are echoed (the lenient choice)") {
         CHECK(wire.exchange(cpu, loopback(3, "a z")) == wire.expect(ok(word(3) + Payload{"61 20 7A", "a z"})));
     }
     SECTION("ASCII: a non-hex count -> C050") {

@@ -1,4 +1,4 @@
-// Read Type Name 0101 — slmp-labels-remote-misc.md §5.7, hardware-behaviour.md §5.
+// Read Type Name 0101 — SLMP Reference Manual §5.6, real-CPU measurements.
 // The manual gives the request data and the Q02UCPU response data; whole frames
 // are built around them (own station, timer 0010) and the responses derived.
 #include "support/fixtures.hpp"
@@ -45,7 +45,7 @@ TEST_CASE("0101: the manual's Q02UCPU example", "[type_name][spec]") {
     CHECK(wire.exchange(cpu, kReadTypeName) == wire.expect(ok(spec_response)));
 }
 
-TEST_CASE("0101 per profile (hardware-behaviour §5)", "[type_name]") {
+TEST_CASE("0101 per profile (hardware-behaviour §5)", "[type_name]") {   // signposts: allow (the name ctest lists)
     SECTION("R120PCPU -> 4844") {
         auto cpu = make_cpu("R120PCPU");
         auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 
+#include "devicemodel/hex.hpp"
+
 namespace slmp::bench::baseline {
 
 namespace {
 
 // Where a frame's request data length field sits and what follows it
-// (../shared/spec/slmp-frames-and-devices.md §3.1–§3.3).
+// (SLMP Reference Manual ch. 4).
 struct Layout {
     bool ascii;
     std::size_t length_at;   // the request data length field
@@ -50,19 +52,12 @@ Answered::Status detect(std::span<const std::uint8_t> in, const Layout*& layout)
     return Answered::Status::Done;
 }
 
-int hex_digit(std::uint8_t c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    return -1;
-}
-
 // A 16-bit field: two bytes little-endian, or four hex characters. -1 when not hex.
 long field16(const std::uint8_t* p, bool ascii) {
     if (!ascii) return p[0] | (p[1] << 8);
     long value = 0;
     for (int i = 0; i < 4; ++i) {
-        int d = hex_digit(p[i]);
+        int d = devicemodel::hex_digit(p[i]);
         if (d < 0) return -1;
         value = value * 16 + d;
     }
@@ -75,8 +70,7 @@ void put16(std::vector<std::uint8_t>& out, unsigned value, bool ascii) {
         out.push_back(static_cast<std::uint8_t>(value >> 8));
         return;
     }
-    static constexpr char kHex[] = "0123456789ABCDEF";
-    for (int shift = 12; shift >= 0; shift -= 4) out.push_back(static_cast<std::uint8_t>(kHex[(value >> shift) & 0xF]));
+    devicemodel::append_hex(out, value, 4);
 }
 
 // What a request asks for, decided from its command alone.

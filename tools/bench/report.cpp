@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "protocol/hex.hpp"
+#include "devicemodel/hex.hpp"
 
 namespace slmp::bench {
 
@@ -53,7 +53,7 @@ void json_operation(std::ostream& out, const OperationResult& r, double seconds)
     out << "},\"end_codes\":{";
     bool first = true;
     for (auto [code, n] : r.recorder.end_codes) {
-        out << (first ? "" : ",") << "\"" << protocol::hex4(code) << "\":" << n;
+        out << (first ? "" : ",") << "\"" << devicemodel::hex4(code) << "\":" << n;
         first = false;
     }
     out << "},\"latency_us\":{\"p50\":" << format("%.1f", l.p50) << ",\"p90\":" << format("%.1f", l.p90)
@@ -115,7 +115,7 @@ void print_table(std::ostream& out, const Options& options, const Results& resul
         out << "\nerrors:";
         for (std::size_t k = 0; k < e.errors.size(); ++k)
             out << ' ' << to_string(static_cast<ErrorKind>(k)) << ' ' << e.errors[k];
-        for (auto [code, n] : e.end_codes) out << "  (end code " << protocol::hex4(code) << " x" << n << ")";
+        for (auto [code, n] : e.end_codes) out << "  (end code " << devicemodel::hex4(code) << " x" << n << ")";
         out << '\n';
     }
     table_cpu(out, options, results);

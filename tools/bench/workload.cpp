@@ -36,7 +36,7 @@ Recipe recipe(const std::string& name) {
                                 "' (known: read1, read960, write1, write960, readbits)");
 }
 
-// Bytes a good response carries after its end code (spec §5.3: words are 2 bytes
+// Bytes a good response carries after its end code (SLMP Reference Manual §5.2: words are 2 bytes
 // or 4 hex characters; bits one nibble or one character a point).
 std::size_t response_data(const Recipe& r, protocol::Codec codec) {
     bool ascii = codec == protocol::Codec::Ascii;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "devicemodel/hex.hpp"
 #include "protocol/end_code.hpp"
-#include "protocol/hex.hpp"
 #include "tools/slmp/errors.hpp"
 
 namespace slmp::cli {
@@ -12,11 +12,11 @@ namespace slmp::cli {
 using protocol::FrameKind;
 using protocol::client::Response;
 
-using protocol::hex4;
+using devicemodel::hex4;
 
 namespace {
 
-std::string hex2(unsigned value) { return protocol::hex_text(value & 0xFF, 2); }
+std::string hex2(unsigned value) { return devicemodel::hex_text(value & 0xFF, 2); }
 
 }  // namespace
 

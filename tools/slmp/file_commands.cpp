@@ -22,7 +22,7 @@ namespace {
 
 namespace client = protocol::client;
 constexpr std::size_t kPiece = 1920;
-constexpr std::size_t kQlPassword = 4, kIqrPasswordMin = 6, kIqrPasswordMax = 32;   // slmp-files.md §3.1
+constexpr std::size_t kQlPassword = 4, kIqrPasswordMin = 6, kIqrPasswordMax = 32;   // SLMP Reference Manual §5.8
 
 bool fits(const std::string& password, bool iqr) {
     if (password.empty()) return true;

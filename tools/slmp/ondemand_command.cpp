@@ -4,9 +4,9 @@
 // client that has sent it something, so a Read Type Name (0101) goes first.
 #include <ctime>
 
+#include "devicemodel/hex.hpp"
 #include "protocol/client.hpp"
 #include "protocol/client_commands.hpp"
-#include "protocol/hex.hpp"
 #include "protocol/ondemand.hpp"
 #include "tools/slmp/commands.hpp"
 #include "tools/slmp/errors.hpp"
@@ -25,7 +25,7 @@ void run_ondemand(Invocation& in) {
         const auto command = reader.u16("command");
         const auto subcommand = reader.u16("subcommand");
         if (!reader.ok() || command != protocol::kOndemandCommand || subcommand != 0)
-            throw ConnectionError("a frame that is no Ondemand push arrived (command " + protocol::hex4(command) + ")");
+            throw ConnectionError("a frame that is no Ondemand push arrived (command " + devicemodel::hex4(command) + ")");
         const auto count = (frame.data.size() - (frame.header.codec == protocol::Codec::Ascii ? 8 : 4)) /
                            (frame.header.codec == protocol::Codec::Ascii ? 4 : 2);
         auto words = reader.words(count, "send data");

@@ -251,7 +251,7 @@ end
 local FRAMES = {
     [0x5000] = {kind = "3E", response = false}, [0xD000] = {kind = "3E", response = true},
     [0x5400] = {kind = "4E", response = false}, [0xD400] = {kind = "4E", response = true},
-    -- binary only (spec slmp-frames-and-devices.md §1.1)
+    -- binary only (SLMP Reference Manual §2.1)
     [0x6800] = {kind = "station-extended", response = false, ext = true},
     [0xE800] = {kind = "station-extended", response = true, ext = true},
 }

@@ -75,7 +75,7 @@ class Scenarios:
         return self._sim.request("GET", "/api/scenarios")["scenarios"]
 
     def load(self, file=None, body=None):
-        """``load(file="scenarios/tank.json")`` (relative to the simulator's directory) or ``load(body={...})``."""
+        """``load(file="scenarios/examples/tank.json")`` (relative to the simulator's directory) or ``load(body={...})``."""
         if (file is None) == (body is None):
             raise ValueError("load(file=...) or load(body={...}), one of them")
         return self._sim.request("POST", "/api/scenarios", {"file": str(file)} if file is not None else body)
