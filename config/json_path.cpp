@@ -1,6 +1,6 @@
 #include "config/json_path.hpp"
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 
 namespace slmp::config {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "devicemodel/drives.hpp"
 #include "protocol/error_response.hpp"
 #include "protocol/hex.hpp"
