@@ -475,7 +475,6 @@ nlohmann::json schema_of(const Setting& row) {
             s["minimum"] = row.type == T::Integer ? nlohmann::json(static_cast<std::uint64_t>(row.min)) : nlohmann::json(row.min);
             s["maximum"] = row.type == T::Integer ? nlohmann::json(static_cast<std::uint64_t>(row.max)) : nlohmann::json(row.max);
         }
-        if (row.section == S::Station && row.key == "name") s["pattern"] = "^[A-Za-z0-9._-]{1,64}$";
         s["description"] = row.help.empty() ? row.doc : row.help;
     }
     return s;
