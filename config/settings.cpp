@@ -319,10 +319,41 @@ constexpr Setting kSettings[] = {
      .fix = "use 0 (none) to 1 (± the whole modelled time), e.g. 0.1"},
     {.section = S::Timing, .key = "seed", .flag = "", .type = T::Integer, .min = 0, .max = 18446744073709551615.0,
      .default_text = "1", .help = "model: the jitter's random stream: the same seed, the same times", .own_check = true},
+
+    // --- a CPU profile (config/profiles/*.json; profile_loader.cpp) -----------------------------------------------------
+    {.section = S::Profile, .key = "name", .flag = "", .type = T::String, .default_text = "required", .help = "the profile id (the `--profile` name of a built-in one is its file name)", .required = true},
+    {.section = S::Profile, .key = "description", .flag = "", .type = T::String, .help = "a line about it, for `--list-profiles`; an extending profile gives its own"},
+    {.section = S::Profile, .key = "extends", .flag = "", .type = T::String, .help = "the base profile (a built-in name, or for a file a path relative to it); the profile gives only what differs"},
+    {.section = S::Profile, .key = "type_name", .flag = "", .type = T::String, .default_text = "required", .help = "what Read Type Name (0101) answers: up to 16 characters", .required = true},
+    {.section = S::Profile, .key = "model_code", .flag = "", .type = T::String, .default_text = "required", .help = "what Read Type Name (0101) answers: a 4-hex-digit code", .required = true},
+    {.section = S::Profile, .key = "family", .flag = "", .type = T::Choice, .choices = "iQ-R|QnU|L|QJ71E71|iQ-F", .default_text = "required", .help = "the command table says which commands each family serves (QnU/L built-in ports refuse 0101, 0406/1406, 0619, 0613/1613; iQ-F refuses 0801/0802, 0613/1613 — hardware-behaviour.md §4)", .required = true},
+    {.section = S::Profile, .key = "frame_4e", .flag = "", .type = T::String, .default_text = "required", .help = "how a 4E request is treated: `answer`, `silence` (no response), `close` (close the TCP connection) or an end code such as `\"C059\"`", .required = true},
+    {.section = S::Profile, .key = "frame_1e", .flag = "", .type = T::Object, .help = "`{\"pc_type\": \"0041\"}`: the port serves the A-compatible 1E frame, binary and ASCII, and 1E PC type read answers the low byte of `pc_type`; without it 1E bytes are no frame there (skipped unanswered, as on an iQ-R built-in port). [frames.md](frames.md)"},
+    {.section = S::Profile, .key = "station_extended_frame", .flag = "", .type = T::Boolean, .default_text = "`false`", .help = "`true`: the port serves the station-number-extended frame (`68 00`, binary; CC-Link IE TSN modules, profile `RJ71GN11-T2`); without it those bytes are no frame there. [frames.md](frames.md)"},
+    {.section = S::Profile, .key = "pipeline", .flag = "", .type = T::Object, .default_text = "no limit", .help = "`{\"buffer\": N, \"over_limit\": \"CEE0\"}`: commands per connection — of a pipelined burst, 1 + N ÷ (open connections) requests are served, the rest get `over_limit` (an end code, `silence` or `close`; default CEE0). [end-codes.md](end-codes.md#commands-per-connection-pipelining-limit)"},
+    {.section = S::Profile, .key = "iqr_subcommands", .flag = "", .type = T::String, .default_text = "required", .help = "the same choice as `frame_4e` for device commands in the iQ-R form (00□2/00□3)", .required = true},
+    {.section = S::Profile, .key = "unsupported_commands", .flag = "", .type = T::Array, .default_text = "none", .help = "further commands this port refuses with `end_codes.not_supported`, beyond what its family refuses"},
+    {.section = S::Profile, .key = "end_codes", .flag = "", .type = T::Object, .default_text = "required", .help = "`not_supported` (C059), `out_of_range` (4031 iQ-R, C056 Q/L), `not_accessible` (4030), `unknown_device` (C05B), `bad_unit` (C05C); optional `online_change_refused` (default 0055) and `system_protect` (default 4004)", .required = true},
+    {.section = S::Profile, .key = "online_change", .flag = "", .type = T::Boolean, .default_text = "`true`", .help = "the ports' default for `online_change`"},
+    {.section = S::Profile, .key = "limits", .flag = "", .type = T::Object, .default_text = "required", .help = "`batch_words`, `batch_bits_binary`, `batch_bits_ascii`, `block_points` (`{\"max\": N, \"end_code\": \"C051\"}`); `random_read_points`, `random_write_weight`, `random_write_bits`, `monitor_points`, `block_count` (`{\"q\": N, \"iqr\": N, \"end_code\": \"C054\"}` — the limit for the Q form and the iQ-R form); `loopback_bytes`; optional `extended_over_limit_code`", .required = true},
+    {.section = S::Profile, .key = "mixed_block_write", .flag = "", .type = T::String, .default_text = "required", .help = "1406 with word and bit blocks: `answer` or an end code (`\"C05B\"` R08CPU)", .required = true},
+    {.section = S::Profile, .key = "station_buffer_words", .flag = "", .type = T::Integer, .help = "0613/1613 reach a buffer of this many words of the port's own (QJ71E71-100) instead of the CPU buffer memory"},
+    {.section = S::Profile, .key = "device_sizes", .flag = "", .type = T::Object, .default_text = "required", .help = "points per area (areas left out do not exist on this CPU)", .required = true},
+    {.section = S::Profile, .key = "start_only_range_check", .flag = "", .type = T::Array, .default_text = "required", .help = "areas where only the start device is range-checked (iQ-R: `R`, `ZR`)", .required = true},
+    {.section = S::Profile, .key = "read_only_devices", .flag = "", .type = T::Array, .default_text = "required", .help = "areas that cannot be written over this port (`S`: 4030)", .required = true},
+    {.section = S::Profile, .key = "size_registers", .flag = "", .type = T::Array, .default_text = "required", .help = "`{\"device\": \"D\", \"sd\": 280, \"bits\": 32}`: the SD registers that publish each size", .required = true},
+    {.section = S::Profile, .key = "zr_ascii_hex", .flag = "", .type = T::Boolean, .default_text = "required", .help = "`true` to number ZR in hexadecimal in ASCII frames (the manuals' form); iQ-R CPUs use decimal", .required = true},
+    {.section = S::Profile, .key = "max_connections", .flag = "", .type = T::Integer, .min = 1, .max = 4096, .default_text = "64", .help = "the ports' default `max_connections`, the CPU's connection count ([Connections per port](#connections-per-port))", .fix = "write the CPU's connection count, e.g. 16"},
+    {.section = S::Profile, .key = "manual_vs_hardware", .flag = "", .type = T::Object, .help = "where the manuals and real CPUs differ, keyed by topic: `{\"mixed_block_write\": {\"what\": \"1406 with word and bit blocks together\", \"manual\": \"served\", \"hardware\": \"C05B (R08CPU)\", \"follows\": \"hardware\"}}`; `follows` is `manual` or `hardware`. A profile that extends another changes one topic key by key. Listed in [compatibility.md](compatibility.md#where-the-manuals-and-real-cpus-differ)"},
+    {.section = S::Profile, .key = "xy_radix", .flag = "", .type = T::Integer, .default_text = "16", .help = "`8` numbers X and Y (and DX/DY) in octal, as an iQ-F CPU does ([X/Y numbering](#xy-numbering-fx5-octal))"},
+    {.section = S::Profile, .key = "timing", .flag = "", .type = T::Object, .default_text = "see timing.md", .help = "`{\"ke_ms\": 3.9, \"ke_ascii_ms\": 3.9, \"kdt_ms\": 0.003, \"kdt_ascii_ms\": 0.0045, \"scan_wait\": true}`: the response-time model's constants for this CPU (sources in [timing.md](timing.md))"},
+    {.section = S::Profile, .key = "file_drives", .flag = "", .type = T::Object, .default_text = "none", .help = "the CPU's file drives, keyed by number: `{\"2\": {\"kind\": \"sd_card\", \"capacity\": 8388608, \"present\": true, \"write_protect\": false}, \"1\": {\"kind\": \"device_label_memory\", \"alias_of\": 3}}`. `kind` is `program_memory`, `sram_card`, `sd_card`, `standard_ram`, `standard_rom`, `device_label_memory` or `data_memory`; `capacity` in bytes; `present` (default `true`) and `write_protect` (default `false`) are the defaults the configuration's `drives` may change. A profile that `extends` another changes one drive key by key and removes one with `null`. Without drives the port refuses the file commands (C059) ([files.md](files.md#drives-per-family))"},
+    {.section = S::Profile, .key = "file_end_codes", .flag = "", .type = T::Object, .default_text = "with `file_drives`", .help = "the end code of each refused file operation — `no_drive`, `bad_name`, `not_found`, `exists`, `not_a_file`, `no_capacity`, `write_protected`, `read_only`, `locked`, `password`, `bad_pointer`, `not_write_mode`, `out_of_range`, `too_many_open`, `host_error`, `run_state` ([end-codes.md](end-codes.md#file-commands-1810182a))"},
+    {.section = S::Profile, .key = "remote_password_length", .flag = "", .type = T::Array, .help = "`[min, max]` characters of the remote password: `[4, 4]` Q/L, `[6, 32]` iQ-R and iQ-F; without it 1630/1631 answer `not_supported` and `cpu.password` is refused"},
 };
 // clang-format on
 
-constexpr std::string_view kTables[] = {"cli", "station", "port", "http", "cpu", "program", "timing"};
+constexpr std::string_view kTables[] = {"cli", "station", "port", "http", "cpu", "program", "timing", "profile"};
 
 std::string_view table_of(const Setting& row) {
     if (!row.doc_table.empty()) return row.doc_table;
@@ -336,6 +367,7 @@ std::string_view table_of(const Setting& row) {
         case S::Program: return "program";
         case S::TimerLimit: return "program";
         case S::Timing: return "timing";
+        case S::Profile: return "profile";
     }
     return "";
 }
@@ -514,6 +546,7 @@ std::string_view section_name(Section section) {
         case S::Program: return "cpu.program";
         case S::TimerLimit: return "cpu.program.timer_limit";
         case S::Timing: return "timing";
+        case S::Profile: return "(profile)";
     }
     return "";
 }

@@ -34,6 +34,7 @@ enum class Section : std::uint8_t {
     Program,       // "cpu": {"program"}
     TimerLimit,    // "cpu": {"program": {"timer_limit"}}
     Timing,        // "timing"
+    Profile,       // a CPU profile file (config/profiles/*.json)
 };
 
 enum class SettingType : std::uint8_t { String, Integer, Number, Boolean, Choice, Array, Object, None };
@@ -99,7 +100,7 @@ double number_setting(const JsonAt& object, Section section, std::string_view ke
 void check_flag_value(const Setting& row, double value);
 
 // The generated docs: a Markdown table ("cli", "station", "port", "http",
-// "cpu", "program", "timing") and the JSON Schema of a configuration file.
+// "cpu", "program", "timing", "profile") and the JSON Schema of a configuration file.
 std::string settings_markdown(std::string_view table);
 std::vector<std::string_view> settings_markdown_tables();
 nlohmann::json settings_json_schema();

@@ -5,6 +5,7 @@
 // SLMP_UPDATE_DOCS=1 rewrites the docs tables and the schema from the table.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -90,7 +91,8 @@ json document(Section section, const std::string& key, const json& value) {
         }
         case Section::TimerLimit: return {{"cpu", {{"program", {{"file", "line1.csv"}, {"timer_limit", {{key, value}}}}}}}};
         case Section::Timing: return {{"timing", {{key, value}}}};
-        case Section::CommandLine: break;
+        case Section::CommandLine:
+        case Section::Profile: break;   // a profile file: its own test below
     }
     return json::object();
 }
@@ -150,7 +152,7 @@ TEST_CASE("each key and each flag is one row", "[settings]") {
 
 TEST_CASE("every row's JSON key is accepted by its loader", "[settings]") {
     for (const auto& row : config::all_settings()) {
-        if (row.key.empty()) continue;
+        if (row.key.empty() || row.section == Section::Profile) continue;
         auto doc = document(row.section, std::string(row.key), sample(row));
         INFO(doc.dump());
         CHECK_NOTHROW(parse(doc));
@@ -159,7 +161,7 @@ TEST_CASE("every row's JSON key is accepted by its loader", "[settings]") {
 
 TEST_CASE("a key's value outside its row's range is refused with the row's fix", "[settings]") {
     for (const auto& row : config::all_settings()) {
-        if (row.key.empty() || !row.has_range() || row.own_check) continue;
+        if (row.key.empty() || !row.has_range() || row.own_check || row.section == Section::Profile) continue;
         auto too_big = row.type == SettingType::Integer ? json(static_cast<std::uint64_t>(row.max) + 1) : json(row.max * 2 + 1);
         auto doc = document(row.section, std::string(row.key), too_big);
         INFO(doc.dump());
@@ -187,6 +189,30 @@ TEST_CASE("an unknown key is refused naming the key and the keys it may be", "[s
     // In a plant too: a station entry's typo names the station.
     CHECK_THROWS_WITH(parse(json{{"stations", {{{"name", "a"}, {"prfile", "R08CPU"}}}}}),
                       Catch::Contains("station 'a': /prfile: unknown key; use one of: profile, bind"));
+}
+
+TEST_CASE("a profile takes the profile rows' keys, and only those", "[settings]") {
+    // Every key the built-in profiles use is a row (they load, so the loader took them).
+    std::set<std::string> used;
+    for (const auto& file : std::filesystem::directory_iterator(kSource / "config/profiles")) {
+        auto profile = json::parse(read_text(file.path()));
+        for (const auto& [key, _] : profile.items()) used.insert(key);
+    }
+    auto keys = config::section_keys(Section::Profile);
+    for (const auto& key : used) {
+        INFO(key);
+        CHECK(std::find(keys.begin(), keys.end(), key) != keys.end());
+    }
+    std::string list;
+    for (auto key : keys) list += (list.empty() ? "" : ", ") + std::string(key);
+    CHECK_THROWS_WITH(config::parse_profile(R"({"extends": "R08CPU", "name": "X", "description": "x", "zzz": 1})", "p.json"),
+                      Catch::Contains("p.json: /zzz: unknown key; use one of: " + list));
+    CHECK_THROWS_WITH(config::parse_profile(R"({"extends": "R08CPU", "name": "X", "description": "x", "max_connections": 0})", "p.json"),
+                      Catch::Contains("/max_connections: must be at least 1; write the CPU's connection count"));
+    for (const auto& file : std::filesystem::directory_iterator(kSource / "config/profiles")) {
+        INFO(file.path());
+        CHECK_NOTHROW(config::load_profile(file.path().string()));
+    }
 }
 
 TEST_CASE("every row's flag is accepted by the command line", "[settings]") {
