@@ -18,14 +18,11 @@
 #include "protocol/frame.hpp"
 #include "protocol/peer.hpp"
 #include "protocol/port_profile.hpp"
+#include "config/config_error.hpp"
 #include "config/timing_config.hpp"
 #include "program/program.hpp"
 
 namespace slmp::config {
-
-struct ConfigError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
 
 // --- CPU profiles ----------------------------------------------------------
 // Names of the profiles built into the binary ("R08CPU", "Q26UDEHCPU", ...).

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "config/config_parts.hpp"
+#include "config/settings.hpp"
 
 namespace slmp::config {
 
@@ -39,13 +40,6 @@ std::pair<Area, std::uint32_t> area_and_number(const JsonAt& at) {
     return {address->spec->area, address->number};
 }
 
-double positive_number(const JsonAt& at, double min, double max, std::string_view fix) {
-    if (!at.json().is_number()) at.fail("expected a number", fix);
-    auto v = at.json().get<double>();
-    if (!(v >= min && v <= max)) at.fail("out of range", fix);
-    return v;
-}
-
 bool is_timer(Area a) { return a == Area::T || a == Area::ST || a == Area::LT || a == Area::LST; }
 bool is_counter(Area a) { return a == Area::C || a == Area::LC; }
 bool is_long(Area a) { return a == Area::LT || a == Area::LST || a == Area::LC; }
@@ -66,7 +60,7 @@ void timers(const JsonAt& list, CpuRuntimeConfig& cpu) {
         // iQ-R defaults: low-speed timers 100 ms; long timers count in 1 µs units.
         double base_ms = area == Area::LT || area == Area::LST ? 0.001 : 100;
         if (at.has("base_ms"))
-            base_ms = positive_number(at["base_ms"], 0.001, 1000, "use 0.001 to 1000 (100 low-speed, 10 high-speed, 1)");
+            base_ms = at["base_ms"].number(0.001, 1000, "use 0.001 to 1000 (100 low-speed, 10 high-speed, 1)");
         r.base = std::chrono::microseconds(static_cast<std::int64_t>(std::llround(base_ms * 1000)));
         cpu.runtime.timers.push_back(r);
         cpu.timer_keys.push_back(at.pointer());
@@ -131,8 +125,7 @@ void lockout(const JsonAt& at, devicemodel::RuntimeConfig& runtime) {
 // "program": {"file": ..., "operation_error": "stop", "wdt_ms": 200, ...}; the
 // keys and their ranges are docs/program.md's "Configuration" table.
 void program_object(const JsonAt& at, ProgramConfig& program) {
-    at.only_keys({"file", "comments", "operation_error", "wdt_ms", "timer_limit", "output_mode_at_run",
-                  "max_steps_per_scan", "allow_double_timer_coils"});
+    check_keys(at, Section::Program);
     auto& o = program.options;
     program.file = at["file"].string();
     if (program.file.empty()) at["file"].fail("is empty", "name the program file (GX Works CSV list or text)");
@@ -143,21 +136,17 @@ void program_object(const JsonAt& at, ProgramConfig& program) {
         o.operation_error = mode == "stop" ? program::OnOperationError::Stop : program::OnOperationError::Continue;
     }
     if (at.has("wdt_ms")) {
-        auto ms = at["wdt_ms"].unsigned_int(2000);
-        if (ms < 10 || ms % 10 != 0) at["wdt_ms"].fail("out of range", "use 10 to 2000 in steps of 10 (default 200)");
+        const auto& row = setting(Section::Program, "wdt_ms");
+        auto ms = at["wdt_ms"].unsigned_int(static_cast<std::uint64_t>(row.max));
+        if (ms < row.min || ms % 10 != 0) at["wdt_ms"].fail("out of range", row.fix);
         o.wdt_ms = static_cast<std::uint32_t>(ms);
     }
     if (at.has("timer_limit")) {
         auto limit = at["timer_limit"];
-        limit.only_keys({"low_ms", "high_ms"});
-        if (limit.has("low_ms")) {
-            o.timer_low_ms = static_cast<std::uint32_t>(limit["low_ms"].unsigned_int(1000));
-            if (o.timer_low_ms == 0) limit["low_ms"].fail("must be at least 1", "use 1 to 1000 (default 100)");
-        }
-        if (limit.has("high_ms")) {
-            o.timer_high_ms = static_cast<std::uint32_t>(limit["high_ms"].unsigned_int(100));
-            if (o.timer_high_ms == 0) limit["high_ms"].fail("must be at least 1", "use 1 to 100 (default 10)");
-        }
+        check_keys(limit, Section::TimerLimit);
+        if (limit.has("low_ms")) o.timer_low_ms = static_cast<std::uint32_t>(whole_setting(limit, Section::TimerLimit, "low_ms"));
+        if (limit.has("high_ms"))
+            o.timer_high_ms = static_cast<std::uint32_t>(whole_setting(limit, Section::TimerLimit, "high_ms"));
     }
     if (at.has("output_mode_at_run")) {
         auto mode = at["output_mode_at_run"].string();
@@ -165,24 +154,16 @@ void program_object(const JsonAt& at, ProgramConfig& program) {
             at["output_mode_at_run"].fail("unknown mode '" + mode + "'", "use \"previous\" or \"recalculate\"");
         o.output_mode_at_run = mode == "previous" ? program::OutputModeAtRun::Previous : program::OutputModeAtRun::Recalculate;
     }
-    if (at.has("max_steps_per_scan")) {
-        o.max_steps_per_scan = at["max_steps_per_scan"].unsigned_int(1'000'000'000);
-        if (o.max_steps_per_scan < 1000) at["max_steps_per_scan"].fail("too small", "use 1000 to 1000000000 (default 10000000)");
-    }
+    if (at.has("max_steps_per_scan")) o.max_steps_per_scan = whole_setting(at, Section::Program, "max_steps_per_scan");
     if (at.has("allow_double_timer_coils")) o.allow_double_timer_coils = at["allow_double_timer_coils"].boolean();
 }
 
 void cpu_object(const JsonAt& at, CpuRuntimeConfig& cpu) {
-    at.only_keys({"switch", "scan_time_ms", "remote_reset", "output_off_at_stop", "password", "password_lockout",
-                  "latch", "timers", "counters", "error", "system_protect", "program"});
+    check_keys(at, Section::Cpu);
     if (at.has("program")) program_object(at["program"], cpu.program);
     auto& r = cpu.runtime;
     if (at.has("switch")) r.run_switch = parse_run_switch(at["switch"].string(), at.pointer() + "/switch");
-    if (at.has("scan_time_ms")) {
-        auto ms = at["scan_time_ms"].unsigned_int(1000);
-        if (ms == 0) at["scan_time_ms"].fail("must be at least 1", "use 1 to 1000 (default 10)");
-        r.scan_time = std::chrono::milliseconds(ms);
-    }
+    if (at.has("scan_time_ms")) r.scan_time = std::chrono::milliseconds(whole_setting(at, Section::Cpu, "scan_time_ms"));
     if (at.has("remote_reset")) r.remote_reset_enabled = at["remote_reset"].boolean();
     if (at.has("output_off_at_stop")) r.output_off_at_stop = at["output_off_at_stop"].boolean();
     if (at.has("password")) r.password = at["password"].string();
@@ -210,11 +191,9 @@ devicemodel::RunSwitch parse_run_switch(const std::string& text, const std::stri
 void parse_cpu_runtime(const JsonAt& root, ServerConfig& c) {
     if (root.has("cpu")) cpu_object(root["cpu"], c.cpu);
     if (root.has("state_dir")) c.persistence.state_dir = root["state_dir"].string();
-    if (root.has("clock_speed"))
-        c.clock_speed = positive_number(root["clock_speed"], kMinClockSpeed, kMaxClockSpeed, kClockSpeedFix);
+    if (root.has("clock_speed")) c.clock_speed = number_setting(root, Section::Station, "clock_speed");
     if (root.has("snapshot_interval_s"))
-        c.persistence.snapshot_interval_s =
-            positive_number(root["snapshot_interval_s"], 0, 86400, "use 0 (only at shutdown) to 86400 seconds");
+        c.persistence.snapshot_interval_s = number_setting(root, Section::Station, "snapshot_interval_s");
     if (root.has("restore")) {
         auto mode = root["restore"].string();
         if (mode != "latched" && mode != "all") root["restore"].fail("unknown restore mode '" + mode + "'", "use \"latched\" or \"all\"");

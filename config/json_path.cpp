@@ -1,6 +1,6 @@
 #include "config/json_path.hpp"
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 
 namespace slmp::config {
 
@@ -30,6 +30,10 @@ void JsonAt::expect_array() const {
 }
 
 void JsonAt::only_keys(std::initializer_list<std::string_view> known) const {
+    only_keys(std::span<const std::string_view>(known.begin(), known.size()));
+}
+
+void JsonAt::only_keys(std::span<const std::string_view> known) const {
     expect_object();
     for (const auto& [key, _] : value_.items()) {
         bool ok = false;
@@ -57,6 +61,24 @@ std::uint64_t JsonAt::unsigned_int(std::uint64_t max) const {
              "write a plain number such as 5000");
     auto v = value_.get<std::uint64_t>();
     if (v > max) fail("value " + std::to_string(v) + " is larger than " + std::to_string(max), "use a smaller number");
+    return v;
+}
+
+std::uint64_t JsonAt::whole(std::uint64_t min, std::uint64_t max, std::string_view fix) const {
+    if (!value_.is_number_unsigned() && !(value_.is_number_integer() && value_.get<std::int64_t>() >= 0))
+        fail("expected a whole number from " + std::to_string(min) + " to " + std::to_string(max) + ", found " +
+                 value_.dump(),
+             fix);
+    auto v = value_.get<std::uint64_t>();
+    if (v > max) fail("value " + std::to_string(v) + " is larger than " + std::to_string(max), fix);
+    if (v < min) fail("must be at least " + std::to_string(min), fix);
+    return v;
+}
+
+double JsonAt::number(double min, double max, std::string_view fix) const {
+    if (!value_.is_number()) fail("expected a number", fix);
+    auto v = value_.get<double>();
+    if (!(v >= min && v <= max)) fail("out of range", fix);
     return v;
 }
 

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -30,10 +31,15 @@ public:
     void expect_array() const;
     // Every member must be one of `known`; an unknown key is usually a typo.
     void only_keys(std::initializer_list<std::string_view> known) const;
+    void only_keys(std::span<const std::string_view> known) const;
 
     std::string string() const;
     bool boolean() const;
     std::uint64_t unsigned_int(std::uint64_t max) const;
+    // A whole number from min to max, or a number (fractions too) from min to
+    // max; an error names the range and ends with `fix` ("use 1 to 1000 (default 10)").
+    std::uint64_t whole(std::uint64_t min, std::uint64_t max, std::string_view fix) const;
+    double number(double min, double max, std::string_view fix) const;
     // A 16-bit code written as 4 hex digits, e.g. "C059" or "4801".
     std::uint16_t hex_code() const;
 

@@ -8,13 +8,13 @@
 
 #include "config/config_parts.hpp"
 #include "config/json_path.hpp"
+#include "config/settings.hpp"
 #include "config/station_pattern.hpp"
 
 namespace slmp::config {
 
 namespace {
 
-constexpr unsigned kMaxThreads = 256;
 constexpr std::uint64_t kMaxTemplateCount = 10000;
 // Keys that belong to the whole process, not to one station.
 constexpr const char* kPlantWideKeys[] = {"http", "log_level", "threads", "stations"};
@@ -179,11 +179,6 @@ private:
     std::map<std::string, std::string> ports_;   // "bind TCP port" -> station name
 };
 
-unsigned threads_key(const JsonAt& at) {
-    auto n = static_cast<unsigned>(at.unsigned_int(kMaxThreads));
-    if (n == 0) at.fail("must be at least 1", "leave \"threads\" out to use every core");
-    return n;
-}
 
 }  // namespace
 
@@ -254,7 +249,7 @@ PlantConfig parse_plant_config(const std::string& json_text, const std::string& 
     JsonAt root(json, source);
     root.expect_object();
     PlantConfig plant;
-    if (root.has("threads")) plant.threads = threads_key(root["threads"]);
+    if (root.has("threads")) plant.threads = static_cast<unsigned>(whole_setting(root, Section::Plant, "threads"));
     if (!root.has("stations")) {
         auto body = json;
         body.erase("threads");

@@ -9,6 +9,7 @@
 #include "config/config.hpp"
 #include "config/config_parts.hpp"
 #include "config/json_path.hpp"
+#include "config/settings.hpp"
 #include "config/profile_drives.hpp"
 
 namespace slmp::config {
@@ -83,11 +84,7 @@ std::string_view family_name(Family family) {
 Profile parse_profile(const std::string& json_text, const std::string& source, const std::filesystem::path& directory) {
     auto json = resolve_profile_json(json_text, {source, directory});
     JsonAt root(json, source);
-    root.only_keys({"name", "description", "type_name", "model_code", "family", "frame_4e", "iqr_subcommands",
-                    "unsupported_commands", "end_codes", "limits", "device_sizes", "start_only_range_check",
-                    "read_only_devices", "size_registers", "zr_ascii_hex", "xy_radix", "mixed_block_write",
-                    "station_buffer_words", "remote_password_length", "online_change", "max_connections",
-                    "manual_vs_hardware", "frame_1e", "station_extended_frame", "pipeline", "timing", "file_drives", "file_end_codes"});
+    check_keys(root, Section::Profile);
     Profile profile;
     auto& p = profile.cpu;
     auto& port = profile.port;
@@ -151,11 +148,8 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
                                                   follows == "hardware"});
         }
     }
-    if (root.has("max_connections")) {
-        port.max_connections = static_cast<unsigned>(root["max_connections"].unsigned_int(4096));
-        if (port.max_connections == 0)
-            root["max_connections"].fail("must be at least 1", "write the CPU's connection count, e.g. 16");
-    }
+    if (root.has("max_connections"))
+        port.max_connections = static_cast<unsigned>(whole_setting(root, Section::Profile, "max_connections"));
 
     auto limits = root["limits"];
     limits.only_keys({"batch_words", "batch_bits_binary", "batch_bits_ascii", "loopback_bytes", "random_read_points",

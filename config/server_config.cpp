@@ -8,6 +8,7 @@
 #include "config/config_parts.hpp"
 #include "config/drive_config.hpp"
 #include "config/json_path.hpp"
+#include "config/settings.hpp"
 
 namespace slmp::config {
 
@@ -17,25 +18,19 @@ using devicemodel::Unit;
 namespace {
 
 PortConfig port(const JsonAt& at) {
-    at.only_keys({"transport", "port", "data_code", "max_connections", "idle_timeout_ms",
-                "partial_frame_timeout_ms", "max_connections_per_address", "remote_password", "online_change",
-                "network", "station"});
+    check_keys(at, Section::Port);
     PortConfig p;
     auto transport = at["transport"].string();
     if (transport == "tcp") p.transport = Transport::Tcp;
     else if (transport == "udp") p.transport = Transport::Udp;
     else at["transport"].fail("unknown transport '" + transport + "'", "use \"tcp\" or \"udp\"");
-    p.port = static_cast<std::uint16_t>(at["port"].unsigned_int(65535));
+    auto whole = [&](std::string_view key) { return static_cast<unsigned>(whole_setting(at, Section::Port, key)); };
+    p.port = static_cast<std::uint16_t>(whole("port"));
     if (at.has("data_code")) p.data_code = parse_data_code(at["data_code"].string(), at["data_code"].pointer());
-    if (at.has("max_connections")) {
-        p.max_connections = static_cast<unsigned>(at["max_connections"].unsigned_int(4096));
-        if (*p.max_connections == 0) at["max_connections"].fail("must be at least 1", "use 1 to reproduce an iQ-R built-in port");
-    }
-    if (at.has("idle_timeout_ms")) p.idle_timeout_ms = static_cast<unsigned>(at["idle_timeout_ms"].unsigned_int(86400000));
-    if (at.has("partial_frame_timeout_ms"))
-        p.partial_frame_timeout_ms = static_cast<unsigned>(at["partial_frame_timeout_ms"].unsigned_int(86400000));
-    if (at.has("max_connections_per_address"))
-        p.max_connections_per_address = static_cast<unsigned>(at["max_connections_per_address"].unsigned_int(4096));
+    if (at.has("max_connections")) p.max_connections = whole("max_connections");
+    if (at.has("idle_timeout_ms")) p.idle_timeout_ms = whole("idle_timeout_ms");
+    if (at.has("partial_frame_timeout_ms")) p.partial_frame_timeout_ms = whole("partial_frame_timeout_ms");
+    if (at.has("max_connections_per_address")) p.max_connections_per_address = whole("max_connections_per_address");
     if (at.has("remote_password")) p.remote_password = at["remote_password"].boolean();
     if (at.has("online_change")) p.online_change = at["online_change"].boolean();
     if (at.has("network") || at.has("station")) {
@@ -51,10 +46,10 @@ PortConfig port(const JsonAt& at) {
 }
 
 HttpConfig http_config(const JsonAt& at) {
-    at.only_keys({"enabled", "port", "bind"});
+    check_keys(at, Section::Http);
     HttpConfig h;
     if (at.has("enabled")) h.enabled = at["enabled"].boolean();
-    if (at.has("port")) h.port = static_cast<std::uint16_t>(at["port"].unsigned_int(65535));
+    if (at.has("port")) h.port = static_cast<std::uint16_t>(whole_setting(at, Section::Http, "port"));
     if (at.has("bind")) h.bind = at["bind"].string();
     return h;
 }
@@ -125,9 +120,7 @@ protocol::StationNumbers checked_station_numbers(unsigned network, unsigned stat
 }
 
 bool valid_log_level(const std::string& level) {
-    for (const char* known : {"trace", "debug", "info", "warn", "error", "off"})
-        if (level == known) return true;
-    return false;
+    return is_choice(setting(Section::Station, "log_level"), level);
 }
 
 DataCode parse_data_code(const std::string& text, const std::string& where) {
@@ -138,10 +131,7 @@ DataCode parse_data_code(const std::string& text, const std::string& where) {
 }
 
 ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path& directory) {
-    root.only_keys({"name", "profile", "bind", "ports", "tcp_port", "udp_port", "max_request_bytes", "device_sizes",
-                    "devices", "log_level", "modules", "networks", "cpus", "http", "cpu", "state_dir",
-                    "snapshot_interval_s", "restore", "clock_speed", "labels", "structures", "drives", "timing",
-                    "scenarios", "kind", "hostlink", "jw51cm"});   // the last three: parse_frontends_config
+    check_keys(root, Section::Station, {"kind", "hostlink", "jw51cm"});   // the extras: parse_frontends_config
     ServerConfig c;
     if (root.has("name")) c.name = checked_station_name(root["name"]);
     if (root.has("profile")) c.profile = root["profile"].string();
@@ -163,14 +153,11 @@ ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path
                                "give one: \"ports\" for every port setting, or tcp_port/udp_port for the numbers");
         c.ports.clear();
         if (root.has("tcp_port"))
-            c.ports.push_back({Transport::Tcp, static_cast<std::uint16_t>(root["tcp_port"].unsigned_int(65535))});
+            c.ports.push_back({Transport::Tcp, static_cast<std::uint16_t>(whole_setting(root, Section::Station, "tcp_port"))});
         if (root.has("udp_port"))
-            c.ports.push_back({Transport::Udp, static_cast<std::uint16_t>(root["udp_port"].unsigned_int(65535))});
+            c.ports.push_back({Transport::Udp, static_cast<std::uint16_t>(whole_setting(root, Section::Station, "udp_port"))});
     }
-    if (root.has("max_request_bytes")) {
-        c.max_request_bytes = root["max_request_bytes"].unsigned_int(1 << 20);
-        if (c.max_request_bytes < 64) root["max_request_bytes"].fail("too small", "use at least 64 (default 8192)");
-    }
+    if (root.has("max_request_bytes")) c.max_request_bytes = whole_setting(root, Section::Station, "max_request_bytes");
     if (root.has("device_sizes")) c.device_sizes = parse_device_sizes(root["device_sizes"]);
     if (root.has("devices")) c.devices = parse_initial_values(root["devices"]);
     if (root.has("log_level")) {

@@ -2,7 +2,7 @@
 
 #include <cctype>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "devicemodel/overloaded.hpp"
 
 namespace slmp::scenarios {

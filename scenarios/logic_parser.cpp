@@ -11,7 +11,7 @@
 #include <charconv>
 #include <sstream>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "program/program.hpp"
 #include "scenarios/load_parts.hpp"
 #include "scenarios/logic.hpp"

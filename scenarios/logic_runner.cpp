@@ -3,7 +3,7 @@
 // compiled against the CPU's profile and global labels, executed per scan.
 #include <charconv>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "program/program.hpp"
 #include "scenarios/logic.hpp"
 

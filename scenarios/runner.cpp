@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "devicemodel/drives.hpp"
 #include "devicemodel/hex.hpp"
 #include "devicemodel/overloaded.hpp"

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "scenarios/loader.hpp"
 
 namespace slmp::scenarios {

@@ -3,7 +3,7 @@
 // their configurations and scenarios before they start anything.
 #pragma once
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "config/plant_config.hpp"
 
 namespace slmp::server {

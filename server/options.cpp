@@ -1,6 +1,7 @@
 #include "server/options.hpp"
 
 #include "config/drive_config.hpp"
+#include "config/settings.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -27,12 +28,55 @@ constexpr const char* kOneStationOptions[] = {"profile", "bind", "tcp-port", "ud
                                               "record", "record-pcap", "hostlink-port", "serial", "network-no",
                                               "station-no", "program"};
 
-void replace_ports(config::ServerConfig& c, Transport transport, const std::vector<unsigned>& ports,
-                   const char* option) {
+void replace_ports(config::ServerConfig& c, Transport transport, const std::vector<unsigned>& ports) {
     std::erase_if(c.ports, [&](const PortConfig& p) { return p.transport == transport; });
-    for (auto port : ports) {
-        if (port > 65535) throw ConfigError(std::string("--") + option + " " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
-        c.ports.push_back(PortConfig{transport, static_cast<std::uint16_t>(port)});
+    for (auto port : ports) c.ports.push_back(PortConfig{transport, static_cast<std::uint16_t>(port)});
+}
+
+// The protocol faces' flags (the host link's; docs/hostlink.md).
+void add_frontend_options(po::options_description& options) {
+    options.add_options()
+        ("hostlink-port", po::value<unsigned>(), "serve the Ladder Motion host link on this TCP port too; 0 = any free port (docs/hostlink.md)")
+        ("serial", po::value<std::string>(), "also serve the host link on a pseudo-terminal and link PATH to it (RS-232C-style tools; needs a host link)");
+}
+
+// The flags of the settings table (config/settings.cpp), in its order; the
+// protocol faces' own flags follow --config.
+void add_table_options(po::options_description& options) {
+    for (const auto& row : config::all_settings()) {
+        if (row.flag.empty()) continue;
+        const std::string name(row.flag);
+        const char* help = row.help.data();   // the table's literals end in '\0'
+        auto add = options.add_options();
+        switch (row.flag_arg) {
+            case config::FlagArg::None: add(name.c_str(), help); break;
+            case config::FlagArg::Text: add(name.c_str(), po::value<std::string>(), help); break;
+            case config::FlagArg::Unsigned: add(name.c_str(), po::value<unsigned>(), help); break;
+            case config::FlagArg::Size: add(name.c_str(), po::value<std::size_t>(), help); break;
+            case config::FlagArg::Real: add(name.c_str(), po::value<double>(), help); break;
+            case config::FlagArg::UnsignedList:
+                add(name.c_str(), po::value<std::vector<unsigned>>()->multitoken(), help);
+                break;
+            case config::FlagArg::TextList: add(name.c_str(), po::value<std::vector<std::string>>(), help); break;
+        }
+        if (row.long_flag() == "config") add_frontend_options(options);
+    }
+}
+
+// Every numeric flag given, against its row's range (in the flag's unit).
+void check_table_ranges(const po::variables_map& vm) {
+    for (const auto& row : config::all_settings()) {
+        const std::string name(row.long_flag());
+        if (row.flag.empty() || !vm.count(name)) continue;
+        switch (row.flag_arg) {
+            case config::FlagArg::Unsigned: config::check_flag_value(row, vm[name].as<unsigned>()); break;
+            case config::FlagArg::Size: config::check_flag_value(row, static_cast<double>(vm[name].as<std::size_t>())); break;
+            case config::FlagArg::Real: config::check_flag_value(row, vm[name].as<double>()); break;
+            case config::FlagArg::UnsignedList:
+                for (auto v : vm[name].as<std::vector<unsigned>>()) config::check_flag_value(row, v);
+                break;
+            default: break;
+        }
     }
 }
 
@@ -43,25 +87,22 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
     auto& frontends = station.frontends;
     if (vm.count("profile")) c.profile = vm["profile"].as<std::string>();
     if (vm.count("bind")) c.bind = vm["bind"].as<std::string>();
-    if (vm.count("tcp-port")) replace_ports(c, Transport::Tcp, vm["tcp-port"].as<std::vector<unsigned>>(), "tcp-port");
-    if (vm.count("udp-port")) replace_ports(c, Transport::Udp, vm["udp-port"].as<std::vector<unsigned>>(), "udp-port");
+    if (vm.count("tcp-port")) replace_ports(c, Transport::Tcp, vm["tcp-port"].as<std::vector<unsigned>>());
+    if (vm.count("udp-port")) replace_ports(c, Transport::Udp, vm["udp-port"].as<std::vector<unsigned>>());
     if (vm.count("data-code")) {
         auto code = config::parse_data_code(vm["data-code"].as<std::string>(), "--data-code");
         for (auto& p : c.ports) p.data_code = code;
     }
     if (vm.count("max-connections")) {
         auto n = vm["max-connections"].as<unsigned>();
-        if (n == 0) throw ConfigError("--max-connections 0: must be at least 1; use 1 to reproduce an iQ-R built-in port");
         for (auto& p : c.ports) p.max_connections = n;
     }
     if (vm.count("idle-timeout")) {
         auto seconds = vm["idle-timeout"].as<double>();
-        if (seconds < 0 || seconds > 86400) throw ConfigError("--idle-timeout: use 0 (never) to 86400 seconds");
         for (auto& p : c.ports) p.idle_timeout_ms = static_cast<unsigned>(seconds * 1000);
     }
     if (vm.count("partial-frame-timeout")) {
         auto seconds = vm["partial-frame-timeout"].as<double>();
-        if (seconds < 0 || seconds > 86400) throw ConfigError("--partial-frame-timeout: use 0 (never) to 86400 seconds");
         for (auto& p : c.ports) p.partial_frame_timeout_ms = static_cast<unsigned>(seconds * 1000);
     }
     if (vm.count("max-connections-per-address")) {
@@ -74,11 +115,7 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
                                                        "--network-no/--station-no");
         for (auto& p : c.ports) p.numbers = numbers;
     }
-    if (vm.count("max-request-bytes")) {
-        c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();
-        if (c.max_request_bytes < 64 || c.max_request_bytes > (1u << 20))
-            throw ConfigError("--max-request-bytes: use 64 to 1048576 (default 8192)");
-    }
+    if (vm.count("max-request-bytes")) c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();
     if (vm.count("log-level")) {
         c.log_level = vm["log-level"].as<std::string>();
         if (!config::valid_log_level(c.log_level))
@@ -86,9 +123,7 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
     }
     if (vm.count("ready-file")) c.ready_file = vm["ready-file"].as<std::string>();
     if (vm.count("http-port")) {
-        auto port = vm["http-port"].as<unsigned>();
-        if (port > 65535) throw ConfigError("--http-port " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
-        c.http.port = static_cast<std::uint16_t>(port);
+        c.http.port = static_cast<std::uint16_t>(vm["http-port"].as<unsigned>());
         c.http.enabled = true;
     }
     if (vm.count("http-bind")) c.http.bind = vm["http-bind"].as<std::string>();
@@ -117,11 +152,7 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
     if (vm.count("program")) c.cpu.program.file = vm["program"].as<std::string>();
     if (vm.count("record")) c.record_file = vm["record"].as<std::string>();
     if (vm.count("record-pcap")) c.record_pcap_file = vm["record-pcap"].as<std::string>();
-    if (vm.count("clock-speed")) {
-        c.clock_speed = vm["clock-speed"].as<double>();
-        if (!(c.clock_speed >= config::kMinClockSpeed && c.clock_speed <= config::kMaxClockSpeed))
-            throw ConfigError(fmt::format("--clock-speed {}: out of range; {}", c.clock_speed, config::kClockSpeedFix));
-    }
+    if (vm.count("clock-speed")) c.clock_speed = vm["clock-speed"].as<double>();
     if (vm.count("timing")) c.timing.mode = config::parse_timing_mode(vm["timing"].as<std::string>(), "--timing");
     if (vm.count("clock")) {
         auto mode = vm["clock"].as<std::string>();
@@ -157,45 +188,7 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
 
 CommandLine parse_command_line(int argc, char** argv) {
     po::options_description options("Options");
-    options.add_options()
-        ("help,h", "print this help and exit")
-        ("version", "print the version and exit")
-        ("list-profiles", "list the built-in CPU profiles and exit")
-        ("profile,p", po::value<std::string>(), "CPU profile: a built-in name (default R08CPU) or a profile .json file")
-        ("config,c", po::value<std::string>(), "JSON configuration file (see docs/configuration.md)")
-        ("hostlink-port", po::value<unsigned>(), "serve the Ladder Motion host link on this TCP port too; 0 = any free port (docs/hostlink.md)")
-        ("serial", po::value<std::string>(), "also serve the host link on a pseudo-terminal and link PATH to it (RS-232C-style tools; needs a host link)")
-        ("tcp-port", po::value<std::vector<unsigned>>()->multitoken(), "TCP port(s) to serve; 0 = any free port (default 5000)")
-        ("udp-port", po::value<std::vector<unsigned>>()->multitoken(), "UDP port(s) to serve; 0 = any free port (default 5000)")
-        ("bind,b", po::value<std::string>(), "address to listen on (default 0.0.0.0)")
-        ("threads", po::value<unsigned>(), "threads serving the stations (default: the machine's cores; a station's connections stay on its thread)")
-        ("data-code", po::value<std::string>(), "binary, ascii or auto (detect per message; default)")
-        ("max-connections", po::value<unsigned>(), "TCP clients served at once per port (default: the profile's, 16 on iQ-R/Q/L, 8 on FX5; 1 = one iQ-R connection entry)")
-        ("idle-timeout", po::value<double>(), "close a TCP connection silent for this many seconds (default 300; 0 = never)")
-        ("partial-frame-timeout", po::value<double>(), "close a TCP connection whose started frame is not whole after this many seconds (default 5; 0 = never)")
-        ("max-connections-per-address", po::value<unsigned>(), "TCP clients served at once per port from one IP address (default 0 = no limit)")
-        ("network-no", po::value<unsigned>(), "the station's network No. (1-239) on every port, with --station-no; requests to it are served as the own station")
-        ("station-no", po::value<unsigned>(), "the station's station No. (1-120) on every port, with --network-no")
-        ("max-request-bytes", po::value<std::size_t>(), "largest request frame accepted (default 8192)")
-        ("log-level,l", po::value<std::string>(), "trace, debug, info, warn, error or off (default info)")
-        ("ready-file", po::value<std::string>(), "write {\"tcp\":[...],\"udp\":[...],\"http\":N,\"pid\":N} here once listening")
-        ("http-port", po::value<unsigned>(), "HTTP API, metrics and web monitor port; 0 = any free port (default 8080)")
-        ("http-bind", po::value<std::string>(), "address for the HTTP port (default: the --bind address)")
-        ("no-http", "serve no HTTP API, metrics or web monitor")
-        ("switch", po::value<std::string>(), "the CPU's RUN/STOP switch: RUN (default) or STOP")
-        ("state-dir", po::value<std::string>(), "keep device memory here across restarts (see docs/cpu-runtime.md)")
-        ("drive", po::value<std::vector<std::string>>(), "N=DIR: serve file drive N from the folder DIR; repeatable (docs/files.md)")
-        ("scenario", po::value<std::vector<std::string>>(), "run a scenario file (values that move, logic, faults, replay); repeatable (docs/scenarios.md)")
-        ("labels", po::value<std::vector<std::string>>(), "declare global labels from this JSON or GX Works3 CSV file; repeatable (docs/labels.md)")
-        ("program", po::value<std::string>(), "run this PLC program (GX Works2/3 CSV list or text instruction list) scan by scan (docs/program.md)")
-        ("record", po::value<std::string>(), "record every request and response to this JSON-lines file (docs/scenarios.md)")
-        ("clock-speed", po::value<double>(), "run the CPU's clock (scan, timers, scenarios) this many times faster than real time (default 1)")
-        ("timing", po::value<std::string>(), "when answers leave: instant (default), end_of_scan or model (docs/timing.md)")
-        ("clock", po::value<std::string>(), "realtime (default) or frozen: no scan until POST /api/clock/step or PUT /api/clock (docs/ci.md)")
-        ("snapshot", po::value<std::string>(), "start from a station snapshot file saved from GET /api/snapshots/{name}/file (docs/ci.md)")
-        ("check-config", po::value<std::string>(), "check this configuration file (and the profile, scenarios and snapshot it names) and exit: 0 good, 2 with the error")
-        ("record-pcap", po::value<std::string>(), "capture every request and response to this pcap file for Wireshark (docs/scenarios.md)");
-
+    add_table_options(options);
     po::variables_map vm;
     try {
         po::store(po::command_line_parser(argc, argv).options(options).run(), vm);
@@ -228,6 +221,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         return cl;
     }
 
+    check_table_ranges(vm);
     // --profile is known before the file is read: the file's addresses follow its numbering.
     const auto profile = vm.count("profile") ? vm["profile"].as<std::string>() : std::string();
     if (vm.count("check-config")) {
@@ -239,11 +233,7 @@ CommandLine parse_command_line(int argc, char** argv) {
     } else {
         cl.plant.stations.emplace_back();
     }
-    if (vm.count("threads")) {
-        auto n = vm["threads"].as<unsigned>();
-        if (n == 0 || n > 256) throw ConfigError("--threads " + std::to_string(n) + ": use 1 to 256 (default: the machine's cores)");
-        cl.plant.threads = n;
-    }
+    if (vm.count("threads")) cl.plant.threads = vm["threads"].as<unsigned>();
     if (cl.plant.plant)
         for (const char* option : kOneStationOptions)
             if (vm.count(option))

@@ -10,7 +10,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "station/log_exception.hpp"
 
 namespace slmp::server {

@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "devicemodel/byte_reader.hpp"
 #include "frontends/hostlink/host_link.hpp"
 #include "frontends/jw51cm/computer_link.hpp"

@@ -8,7 +8,7 @@
 #include <iterator>
 #include <system_error>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 
 namespace slmp::station {
 namespace {

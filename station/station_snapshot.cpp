@@ -12,7 +12,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "devicemodel/byte_reader.hpp"
 #include "devicemodel/snapshot.hpp"
 #include "station/persistence.hpp"

@@ -2,7 +2,7 @@
 // devices' words now as an Ondemand 2101 push (docs/timing.md) to every
 // connected client, or to "tcp", "udp" or one TCP connection id. docs/api.md,
 // "Ondemand".
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "control/endpoints/api.hpp"
 #include "scenarios/recording.hpp"
 #include "scenarios/scenario.hpp"

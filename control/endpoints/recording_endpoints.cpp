@@ -3,7 +3,7 @@
 // the path is relative to the simulator's working directory), as --record does.
 // DELETE /api/recording — stops it; the file is flushed and closed, ready to
 // replay. A --record-pcap capture is not controlled here. docs/scenarios.md.
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "control/endpoints/api.hpp"
 
 namespace slmp::control {

@@ -6,7 +6,7 @@
 // (file or "request body", JSON pointer, fix).
 // DELETE /api/scenarios/{name} — stops it; its devices keep their values.
 // How several scenarios run side by side: scenarios/runner_set.hpp.
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "control/endpoints/api.hpp"
 #include "control/observers/event_hub.hpp"
 #include "scenarios/loader.hpp"

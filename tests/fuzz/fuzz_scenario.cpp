@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "scenarios/loader.hpp"
 #include "tests/fuzz/fuzz_check.hpp"
 

@@ -1,0 +1,631 @@
+// The settings table (config/settings.hpp) and what is generated from it.
+#include "config/settings.hpp"
+
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "config/config_error.hpp"
+#include "config/json_path.hpp"
+
+namespace slmp::config {
+
+namespace {
+
+using S = Section;
+using T = SettingType;
+using F = FlagArg;
+
+// clang-format off
+constexpr Setting kSettings[] = {
+    // --- the command line alone ---------------------------------------------------------------------------------
+    {.section = S::CommandLine, .key = "", .flag = "help,h", .type = T::None, .help = "print this help and exit"},
+    {.section = S::CommandLine, .key = "", .flag = "version", .type = T::None, .help = "print the version and exit"},
+    {.section = S::CommandLine, .key = "", .flag = "list-profiles", .type = T::None,
+     .help = "list the built-in CPU profiles and exit"},
+    {.section = S::CommandLine, .key = "", .flag = "config,c", .type = T::String, .flag_arg = F::Text,
+     .help = "JSON configuration file (see docs/configuration.md)"},
+    {.section = S::CommandLine, .key = "", .flag = "check-config", .type = T::String, .flag_arg = F::Text,
+     .help = "check this configuration file (and the profile, scenarios and snapshot it names) and exit: 0 good, 2 with the error"},
+    {.section = S::CommandLine, .key = "", .flag = "ready-file", .type = T::String, .flag_arg = F::Text,
+     .help = "write {\"tcp\":[...],\"udp\":[...],\"http\":N,\"pid\":N} here once listening"},
+    {.section = S::CommandLine, .key = "", .flag = "record", .type = T::String, .flag_arg = F::Text,
+     .help = "record every request and response to this JSON-lines file (docs/scenarios.md)"},
+    {.section = S::CommandLine, .key = "", .flag = "record-pcap", .type = T::String, .flag_arg = F::Text,
+     .help = "capture every request and response to this pcap file for Wireshark (docs/scenarios.md)"},
+    {.section = S::CommandLine, .key = "", .flag = "clock", .type = T::Choice, .flag_arg = F::Text,
+     .choices = "realtime|frozen", .default_text = "realtime",
+     .help = "realtime (default) or frozen: no scan until POST /api/clock/step or PUT /api/clock (docs/ci.md)"},
+    {.section = S::CommandLine, .key = "", .flag = "snapshot", .type = T::String, .flag_arg = F::Text,
+     .help = "start from a station snapshot file saved from GET /api/snapshots/{name}/file (docs/ci.md)"},
+
+    // --- a plant ---------------------------------------------------------------------------------------------------
+    {.section = S::Plant, .key = "threads", .flag = "threads", .type = T::Integer, .flag_arg = F::Unsigned,
+     .min = 1, .max = 256, .default_text = "the machine's cores",
+     .help = "threads serving the stations (default: the machine's cores; a station's connections stay on its thread)",
+     .fix = "leave \"threads\" out to use every core, or use 1 to 256",
+     .doc = "threads serving the stations ([plants.md](plants.md#threads))", .doc_table = "station",
+     .flag_fix = "use 1 to 256 (default: the machine's cores)"},
+    {.section = S::Plant, .key = "stations", .flag = "", .type = T::Array, .default_text = "none",
+     .help = "the stations of a plant, each an object of the keys below or a template ([plants.md](plants.md))",
+     .doc_table = "station"},
+
+    // --- one station -----------------------------------------------------------------------------------------------
+    {.section = S::Station, .key = "profile", .flag = "profile,p", .type = T::String, .flag_arg = F::Text,
+     .default_text = "\"R08CPU\"",
+     .help = "CPU profile: a built-in name (default R08CPU) or a profile .json file",
+     .doc = "built-in profile name (case-insensitive) or a path to a profile `.json`"},
+    {.section = S::Station, .key = "bind", .flag = "bind,b", .type = T::String, .flag_arg = F::Text,
+     .default_text = "\"0.0.0.0\"", .help = "address to listen on (default 0.0.0.0)",
+     .doc = "IP address to listen on"},
+    {.section = S::Station, .key = "ports", .flag = "", .type = T::Array, .default_text = "TCP 5000 and UDP 5000",
+     .help = "one object per port (below)"},
+    {.section = S::Station, .key = "tcp_port", .flag = "tcp-port", .type = T::Integer, .flag_arg = F::UnsignedList,
+     .min = 0, .max = 65535, .help = "TCP port(s) to serve; 0 = any free port (default 5000)",
+     .fix = "use 0-65535 (0 = any free port)",
+     .doc = "the short form of `ports`: the TCP port number only (defaults for the other keys); a transport left "
+            "out is not served; not together with `ports`",
+     .flag_fix = "not a port number; use 0-65535 (0 = any free port)"},
+    {.section = S::Station, .key = "udp_port", .flag = "udp-port", .type = T::Integer, .flag_arg = F::UnsignedList,
+     .min = 0, .max = 65535, .help = "UDP port(s) to serve; 0 = any free port (default 5000)",
+     .fix = "use 0-65535 (0 = any free port)",
+     .doc = "the short form of `ports`: the UDP port number only, as `tcp_port`",
+     .flag_fix = "not a port number; use 0-65535 (0 = any free port)"},
+    {.section = S::Station, .key = "max_request_bytes", .flag = "max-request-bytes", .type = T::Integer,
+     .flag_arg = F::Size, .min = 64, .max = 1 << 20, .default_text = "8192",
+     .help = "largest request frame accepted (default 8192)", .fix = "use 64 to 1048576 (default 8192)",
+     .doc = "largest request frame; a larger length field closes a TCP connection / drops a datagram"},
+    {.section = S::Station, .key = "device_sizes", .flag = "", .type = T::Object, .default_text = "the profile's",
+     .help = "points per device area, overriding the profile (`X`, `Y`, `M`, `L`, `F`, `V`, `B`, `SB`, `S`, `SM`, "
+             "`D`, `W`, `SW`, `SD`, `R`, `ZR`, `RD`, `Z`, `LZ`, `T`, `ST`, `C`, `LT`, `LST`, `LC`, and the CPU "
+             "buffer memory `G`, `HG`)"},
+    {.section = S::Station, .key = "devices", .flag = "", .type = T::Object, .default_text = "—",
+     .help = "initial values by address (below)"},
+    {.section = S::Station, .key = "modules", .flag = "", .type = T::Array, .default_text = "none",
+     .help = "intelligent function modules with buffer memory ([below](#modules-networks-and-cpus))"},
+    {.section = S::Station, .key = "networks", .flag = "", .type = T::Array, .default_text = "none",
+     .help = "network modules and their link devices ([below](#modules-networks-and-cpus))"},
+    {.section = S::Station, .key = "cpus", .flag = "", .type = T::Array, .default_text = "none",
+     .help = "CPU No.2–4 of a multi-CPU system ([below](#modules-networks-and-cpus))"},
+    {.section = S::Station, .key = "log_level", .flag = "log-level,l", .type = T::Choice, .flag_arg = F::Text,
+     .choices = "trace|debug|info|warn|error|off", .default_text = "\"info\"",
+     .help = "trace, debug, info, warn, error or off (default info)"},
+    {.section = S::Station, .key = "name", .flag = "", .type = T::String, .default_text = "—",
+     .help = "the station's name in a plant ([plants.md](plants.md))"},
+    {.section = S::Station, .key = "scenarios", .flag = "scenario", .type = T::Array, .flag_arg = F::TextList,
+     .default_text = "none",
+     .help = "run a scenario file (values that move, logic, faults, replay); repeatable (docs/scenarios.md)",
+     .doc = "scenario files to run, relative to this file (added to `--scenario`)", .doc_type = "array of paths"},
+    {.section = S::Station, .key = "http", .flag = "", .type = T::Object, .default_text = "on, port 8080",
+     .help = "the HTTP API, metrics and web monitor ([below](#http-api-http))"},
+    {.section = S::Station, .key = "cpu", .flag = "", .type = T::Object, .default_text = "none",
+     .help = "the running CPU ([below](#the-running-cpu-cpu))"},
+    {.section = S::Station, .key = "labels", .flag = "labels", .type = T::Array, .flag_arg = F::TextList,
+     .default_text = "none",
+     .help = "declare global labels from this JSON or GX Works3 CSV file; repeatable (docs/labels.md)",
+     .doc = "global labels: a list, or the name of a GX Works3 CSV file ([labels.md](labels.md))",
+     .doc_type = "array or string"},
+    {.section = S::Station, .key = "structures", .flag = "", .type = T::Array, .default_text = "none",
+     .help = "structure types of the global labels ([labels.md](labels.md))"},
+    {.section = S::Station, .key = "state_dir", .flag = "state-dir", .type = T::String, .flag_arg = F::Text,
+     .default_text = "none", .help = "keep device memory here across restarts (see docs/cpu-runtime.md)",
+     .doc = "keep device memory here (`--state-dir`); nothing touches disk without it; file drives without a "
+            "folder of their own live in `<state_dir>/drives/<n>`",
+     .doc_table = "cpu"},
+    {.section = S::Station, .key = "drives", .flag = "drive", .type = T::Object, .flag_arg = F::TextList,
+     .default_text = "the family's drives, in memory",
+     .help = "N=DIR: serve file drive N from the folder DIR; repeatable (docs/files.md)",
+     .doc = "file drives of CPU No.1 (1810–182A): a host folder (must exist), capacity in bytes, the SD LOCK "
+            "switch, card inserted, file passwords; `--drive N=DIR` (repeatable) sets a folder and wins "
+            "([files.md](files.md))",
+     .doc_type = "`{\"4\": {\"dir\": \"plc-data\", \"capacity\": 4194304, \"write_protect\": false, \"present\": "
+                 "true, \"passwords\": {\"LINE.CSV\": \"secret1\"}}}`",
+     .doc_table = "cpu"},
+    {.section = S::Station, .key = "timing", .flag = "", .type = T::Object, .default_text = "`{\"mode\": \"instant\"}`",
+     .help = "when answers leave ([below](#timing-timing), [timing.md](timing.md))", .doc_table = "cpu"},
+    {.section = S::Station, .key = "clock_speed", .flag = "clock-speed", .type = T::Number, .flag_arg = F::Real,
+     .min = 0.01, .max = 1000, .default_text = "1",
+     .help = "run the CPU's clock (scan, timers, scenarios) this many times faster than real time (default 1)",
+     .fix = "use a factor from 0.01 to 1000 (default 1: real time)",
+     .doc = "the CPU's clock runs this many times faster than real time, 0.01–1000 (`--clock-speed`; "
+            "[scenarios.md](scenarios.md#clock))",
+     .doc_table = "cpu"},
+    {.section = S::Station, .key = "snapshot_interval_s", .flag = "", .type = T::Number, .min = 0, .max = 86400,
+     .default_text = "0", .help = "also save every N seconds (0: only at shutdown and on SIGUSR1)",
+     .fix = "use 0 (only at shutdown) to 86400 seconds", .doc_table = "cpu"},
+    {.section = S::Station, .key = "restore", .flag = "", .type = T::Choice, .choices = "latched|all",
+     .default_text = "\"latched\"",
+     .help = "what a restart brings back: latched devices only (a power cycle) or everything saved",
+     .doc_table = "cpu"},
+
+    // --- "ports": [ {...} ] ------------------------------------------------------------------------------------------
+    {.section = S::Port, .key = "transport", .flag = "", .type = T::Choice, .choices = "tcp|udp",
+     .default_text = "required", .help = "", .required = true},
+    {.section = S::Port, .key = "port", .flag = "", .type = T::Integer, .min = 0, .max = 65535,
+     .default_text = "required", .help = "`0` = any free port (read it back from `--ready-file`)",
+     .fix = "use 0-65535 (0 = any free port)", .required = true},
+    {.section = S::Port, .key = "data_code", .flag = "data-code", .type = T::Choice, .flag_arg = F::Text,
+     .choices = "binary|ascii|auto", .default_text = "\"auto\"",
+     .help = "binary, ascii or auto (detect per message; default)",
+     .doc = "a message in the other code is ignored (no answer), as a real port set to one code does "
+            "(`--data-code` sets every port)"},
+    {.section = S::Port, .key = "max_connections", .flag = "max-connections", .type = T::Integer,
+     .flag_arg = F::Unsigned, .min = 1, .max = 4096,
+     .default_text = "the profile's (16 on iQ-R, Q, L; 8 on FX5; 56 on RJ71EN71)",
+     .help = "TCP clients served at once per port (default: the profile's, 16 on iQ-R/Q/L, 8 on FX5; 1 = one iQ-R connection entry)",
+     .fix = "use 1 to 4096; 1 reproduces an iQ-R built-in port",
+     .doc = "TCP clients at once; at the limit the listening socket is closed, so further clients get *connection "
+            "refused*. See [Connections per port](#connections-per-port)",
+     .doc_type = "number ≥ 1"},
+    {.section = S::Port, .key = "idle_timeout_ms", .flag = "idle-timeout", .type = T::Integer, .flag_arg = F::Real,
+     .min = 0, .max = 86400000, .default_text = "300000",
+     .help = "close a TCP connection silent for this many seconds (default 300; 0 = never)",
+     .fix = "use 0 (never) to 86400000 ms (default 300000)",
+     .doc = "close a TCP connection silent this long; `0` = never (`--idle-timeout` in seconds)",
+     .flag_scale = 1000, .flag_fix = "use 0 (never) to 86400 seconds"},
+    {.section = S::Port, .key = "partial_frame_timeout_ms", .flag = "partial-frame-timeout", .type = T::Integer,
+     .flag_arg = F::Real, .min = 0, .max = 86400000, .default_text = "5000",
+     .help = "close a TCP connection whose started frame is not whole after this many seconds (default 5; 0 = never)",
+     .fix = "use 0 (never) to 86400000 ms (default 5000)",
+     .doc = "close a TCP connection whose started frame is not whole this long after its first byte (logged as a "
+            "warning); `0` = never. Bytes that trickle in do not extend it, so half-sent headers cannot hold "
+            "connection slots (a slowloris client) for the idle timeout. While the server waits to write answers "
+            "a slow client has not read yet, it reads nothing, so this timeout waits too and counts again from the "
+            "write's end (the idle timeout does not wait)",
+     .flag_scale = 1000, .flag_fix = "use 0 (never) to 86400 seconds"},
+    {.section = S::Port, .key = "max_connections_per_address", .flag = "max-connections-per-address",
+     .type = T::Integer, .flag_arg = F::Unsigned, .min = 0, .max = 4096, .default_text = "0",
+     .help = "TCP clients served at once per port from one IP address (default 0 = no limit)",
+     .fix = "use 0 (no limit) to 4096",
+     .doc = "TCP clients at once from one IP address; a new connection from an address at its limit is accepted "
+            "and closed at once (logged), while other addresses are served; `0` = no limit. A simulator's guard: "
+            "real ports have no such setting"},
+    {.section = S::Port, .key = "remote_password", .flag = "", .type = T::Boolean, .default_text = "`true`",
+     .help = "the CPU's remote password (`cpu.password`) locks this port's connections. As on a real module the "
+             "password is enabled per port: a port with `false` is served without Unlock (there, 1630 answers "
+             "0000 and 1631 C810, as on a CPU without a password)"},
+    {.section = S::Port, .key = "online_change", .flag = "", .type = T::Boolean,
+     .default_text = "the profile's (`true`)",
+     .help = "writes served while the CPU is in RUN. With `false`, a write request (every command the command "
+             "table marks as writing) while the CPU is in RUN answers the profile's "
+             "`end_codes.online_change_refused` (0055, the L/Q E71 code) and changes nothing; reads, and writes "
+             "in STOP/PAUSE, are served"},
+    {.section = S::Port, .key = "network", .flag = "network-no", .type = T::Integer, .flag_arg = F::Unsigned,
+     .min = 1, .max = 239, .default_text = "not set",
+     .help = "the station's network No. (1-239) on every port, with --station-no; requests to it are served as the own station",
+     .doc = "the station's network No. (1–239), given together with `station`, as set on the real module: a "
+            "request addressed to them is served as the own station, besides 00/FF; another station gets 4A02, "
+            "another network 4A01 ([end-codes.md](end-codes.md#own-network-and-station-numbers))",
+     .own_check = true},
+    {.section = S::Port, .key = "station", .flag = "station-no", .type = T::Integer, .flag_arg = F::Unsigned,
+     .min = 1, .max = 120, .default_text = "not set",
+     .help = "the station's station No. (1-120) on every port, with --network-no",
+     .doc = "the station's station No. (1–120), given together with `network`", .own_check = true},
+
+    // --- "http" -----------------------------------------------------------------------------------------------------
+    {.section = S::Http, .key = "enabled", .flag = "no-http", .type = T::Boolean, .default_text = "`true`",
+     .help = "serve no HTTP API, metrics or web monitor",
+     .doc = "`false` serves no HTTP at all (`--no-http`)"},
+    {.section = S::Http, .key = "port", .flag = "http-port", .type = T::Integer, .flag_arg = F::Unsigned, .min = 0,
+     .max = 65535, .default_text = "8080",
+     .help = "HTTP API, metrics and web monitor port; 0 = any free port (default 8080)",
+     .fix = "use 0-65535 (0 = any free port)",
+     .doc = "`0` = any free port; the port is written to the `--ready-file` as `\"http\": N` (`--http-port` turns "
+            "HTTP on even when the file turned it off)",
+     .flag_fix = "not a port number; use 0-65535 (0 = any free port)"},
+    {.section = S::Http, .key = "bind", .flag = "http-bind", .type = T::String, .flag_arg = F::Text,
+     .default_text = "the SLMP `bind` address", .help = "address for the HTTP port (default: the --bind address)",
+     .doc = "listen address of the HTTP port (a plant whose stations bind different addresses: `0.0.0.0`)"},
+
+    // --- "cpu" ------------------------------------------------------------------------------------------------------
+    {.section = S::Cpu, .key = "switch", .flag = "switch", .type = T::Choice, .flag_arg = F::Text,
+     .choices = "RUN|STOP", .default_text = "\"RUN\"",
+     .help = "the CPU's RUN/STOP switch: RUN (default) or STOP", .doc = "the RUN/STOP switch (`--switch`)"},
+    {.section = S::Cpu, .key = "scan_time_ms", .flag = "", .type = T::Integer, .min = 1, .max = 1000,
+     .default_text = "10", .help = "time between scans", .fix = "use 1 to 1000 (default 10)", .doc_type = "1–1000"},
+    {.section = S::Cpu, .key = "remote_reset", .flag = "", .type = T::Boolean, .default_text = "`false`",
+     .help = "allow Remote RESET 1006 (the CPU parameter; off by default as on the real CPU: 4014)",
+     .doc_type = "bool"},
+    {.section = S::Cpu, .key = "output_off_at_stop", .flag = "", .type = T::Boolean, .default_text = "`true`",
+     .help = "turn every Y off when the CPU enters STOP", .doc_type = "bool"},
+    {.section = S::Cpu, .key = "password", .flag = "", .type = T::String, .default_text = "none",
+     .help = "remote password; length per the profile's `remote_password_length`"},
+    {.section = S::Cpu, .key = "password_lockout", .flag = "", .type = T::Object, .default_text = "10, 60",
+     .help = "wrong passwords in a row before C815, and for how long; `attempts: 0` never locks out",
+     .doc_type = "`{\"attempts\": N, \"seconds\": S}`"},
+    {.section = S::Cpu, .key = "system_protect", .flag = "", .type = T::Boolean, .default_text = "`false`",
+     .help = "the CPU's system protect (security key / write protection): on every port, writes and remote "
+             "operations (1001–1006) answer the profile's `end_codes.system_protect` (4004) and change nothing; "
+             "reads and the password's 1630/1631 are served"},
+    {.section = S::Cpu, .key = "latch", .flag = "", .type = T::Object, .default_text = "none",
+     .help = "latch ranges per area (numbers, or addresses such as `\"W1F\"` for hex devices); L, R and ZR are "
+             "always kept",
+     .doc_type = "`{\"D\": [first, last]}` or `{\"D\": [[a, b], [c, d]]}`"},
+    {.section = S::Cpu, .key = "timers", .flag = "", .type = T::Array, .default_text = "none",
+     .help = "timers that time while their coil is on (T, ST, LT, LST; `base_ms` 0.001–1000, default 100, LT/LST "
+             "0.001)",
+     .doc_type = "`[{\"device\": \"T0\", \"points\": 1, \"preset\": 20, \"base_ms\": 100}]`"},
+    {.section = S::Cpu, .key = "counters", .flag = "", .type = T::Array, .default_text = "none",
+     .help = "counters that count coil rising edges (C, LC)",
+     .doc_type = "`[{\"device\": \"C0\", \"points\": 1, \"preset\": 5}]`"},
+    {.section = S::Cpu, .key = "program", .flag = "", .type = T::Object, .default_text = "none",
+     .help = "the PLC program the CPU runs scan by scan (`--program FILE` sets `file`); every key: "
+             "[program.md](program.md#configuration)",
+     .doc_type = "`{\"file\": \"line1.csv\", \"operation_error\": \"stop\", \"wdt_ms\": 200, ...}`"},
+    {.section = S::Cpu, .key = "error", .flag = "", .type = T::Object, .default_text = "none",
+     .help = "a CPU error present from the start (SD0/SM0; `stop: true` keeps the CPU in STOP until a Remote "
+             "RESET)",
+     .doc_type = "`{\"code\": \"1900\", \"stop\": false}`"},
+
+    // --- "cpu": {"program": {...}} -------------------------------------------------------------------------------------
+    {.section = S::Program, .key = "file", .flag = "program", .type = T::String, .flag_arg = F::Text,
+     .default_text = "— (required)",
+     .help = "run this PLC program (GX Works2/3 CSV list or text instruction list) scan by scan (docs/program.md)",
+     .doc = "the program; relative paths start at the configuration file's folder. `--program FILE` sets it.",
+     .required = true},
+    {.section = S::Program, .key = "comments", .flag = "", .type = T::String, .default_text = "none",
+     .help = "device comments (GX Works CSV); relative paths as `file`", .doc = "device comment file"},
+    {.section = S::Program, .key = "operation_error", .flag = "", .type = T::Choice, .choices = "stop|continue",
+     .default_text = "\"stop\"", .help = "what an operation error does: stop the CPU or continue the scan",
+     .doc = "`stop`: an operation error ends the scan and stops the CPU (stop error, SD203 = 0x0042, Y off, Remote "
+            "RUN answers C05F until RESET); `continue`: SM0/SM1 (and SM56 on Q/L) and SD0 are set, the failing "
+            "instruction does nothing, execution goes on; 1617 Clear Error clears them"},
+    {.section = S::Program, .key = "wdt_ms", .flag = "", .type = T::Integer, .min = 10, .max = 2000,
+     .default_text = "200", .help = "the scan's watchdog time, in steps of 10 ms",
+     .fix = "use 10 to 2000 in steps of 10 (default 200)",
+     .doc = "watchdog, 10–2000 in steps of 10, on the **modelled** execution time (below)", .own_check = true},
+    {.section = S::Program, .key = "timer_limit", .flag = "", .type = T::Object,
+     .default_text = "`{\"low_ms\": 100, \"high_ms\": 10}`",
+     .help = "the time bases of `OUT T` and `OUTH T` (below)"},
+    {.section = S::Program, .key = "output_mode_at_run", .flag = "", .type = T::Choice,
+     .choices = "previous|recalculate", .default_text = "\"previous\"",
+     .help = "the outputs when STOP turns to RUN: as before STOP, or as the first scan computes them",
+     .doc = "at STOP→RUN: `previous` puts back the Y image saved at STOP before scan 1; `recalculate` leaves Y off "
+            "until the program writes them. A Remote RUN with a clear mode clears the saved image too."},
+    {.section = S::Program, .key = "max_steps_per_scan", .flag = "", .type = T::Integer, .min = 1000,
+     .max = 1'000'000'000, .default_text = "10000000",
+     .help = "a scan that runs more steps (a loop that does not end) is a watchdog error",
+     .fix = "use 1000 to 1000000000 (default 10000000)",
+     .doc = "host guard for loops whose modelled time is tiny: more executed instructions in one scan is a "
+            "watchdog error"},
+    {.section = S::Program, .key = "allow_double_timer_coils", .flag = "", .type = T::Boolean,
+     .default_text = "`false`", .help = "allow two OUT coils of one timer (refused at load otherwise)",
+     .doc = "a timer or counter driven by two `OUT` steps is a load error unless set"},
+    {.section = S::TimerLimit, .key = "low_ms", .flag = "", .type = T::Integer, .min = 1, .max = 1000,
+     .default_text = "100", .help = "time base of `OUT T`", .fix = "use 1 to 1000 (default 100)"},
+    {.section = S::TimerLimit, .key = "high_ms", .flag = "", .type = T::Integer, .min = 1, .max = 100,
+     .default_text = "10", .help = "time base of `OUTH T`", .fix = "use 1 to 100 (default 10)"},
+
+    // --- "timing" ----------------------------------------------------------------------------------------------------
+    {.section = S::Timing, .key = "mode", .flag = "timing", .type = T::Choice, .flag_arg = F::Text,
+     .choices = "instant|end_of_scan|model", .default_text = "\"instant\"",
+     .help = "when answers leave: instant (default), end_of_scan or model (docs/timing.md)"},
+    {.section = S::Timing, .key = "ke_ms", .flag = "", .type = T::Number, .min = 0, .max = 60000,
+     .default_text = "the profile's", .help = "model: Ke, the fixed part of a response (both codes)",
+     .fix = "use 0 to 60000 ms"},
+    {.section = S::Timing, .key = "ke_ascii_ms", .flag = "", .type = T::Number, .min = 0, .max = 60000,
+     .default_text = "the profile's", .help = "model: Ke for ASCII frames", .fix = "use 0 to 60000 ms"},
+    {.section = S::Timing, .key = "kdt_ms", .flag = "", .type = T::Number, .min = 0, .max = 100,
+     .default_text = "the profile's", .help = "model: Kdt, the time a device point adds", .fix = "use 0 to 100 ms"},
+    {.section = S::Timing, .key = "kdt_ascii_ms", .flag = "", .type = T::Number, .min = 0, .max = 100,
+     .default_text = "the profile's", .help = "model: Kdt for ASCII frames", .fix = "use 0 to 100 ms"},
+    {.section = S::Timing, .key = "scan_wait", .flag = "", .type = T::Boolean, .default_text = "the profile's",
+     .help = "model: the answer also waits for the END of the scan"},
+    {.section = S::Timing, .key = "jitter", .flag = "", .type = T::Number, .min = 0, .max = 1, .default_text = "0",
+     .help = "model: ± this fraction of the modelled time, at random",
+     .fix = "use 0 (none) to 1 (± the whole modelled time), e.g. 0.1"},
+    {.section = S::Timing, .key = "seed", .flag = "", .type = T::Integer, .min = 0, .max = 18446744073709551615.0,
+     .default_text = "1", .help = "model: the jitter's random stream: the same seed, the same times", .own_check = true},
+
+    // --- a CPU profile (config/profiles/*.json; profile_loader.cpp) -----------------------------------------------------
+    {.section = S::Profile, .key = "name", .flag = "", .type = T::String, .default_text = "required", .help = "the profile id (the `--profile` name of a built-in one is its file name)", .required = true},
+    {.section = S::Profile, .key = "description", .flag = "", .type = T::String, .help = "a line about it, for `--list-profiles`; an extending profile gives its own"},
+    {.section = S::Profile, .key = "extends", .flag = "", .type = T::String, .help = "the base profile (a built-in name, or for a file a path relative to it); the profile gives only what differs"},
+    {.section = S::Profile, .key = "type_name", .flag = "", .type = T::String, .default_text = "required", .help = "what Read Type Name (0101) answers: up to 16 characters", .required = true},
+    {.section = S::Profile, .key = "model_code", .flag = "", .type = T::String, .default_text = "required", .help = "what Read Type Name (0101) answers: a 4-hex-digit code", .required = true},
+    {.section = S::Profile, .key = "family", .flag = "", .type = T::Choice, .choices = "iQ-R|QnU|L|QJ71E71|iQ-F", .default_text = "required", .help = "the command table says which commands each family serves (QnU/L built-in ports refuse 0101, 0406/1406, 0619, 0613/1613; iQ-F refuses 0801/0802, 0613/1613 — real-CPU measurements)", .required = true},
+    {.section = S::Profile, .key = "frame_4e", .flag = "", .type = T::String, .default_text = "required", .help = "how a 4E request is treated: `answer`, `silence` (no response), `close` (close the TCP connection) or an end code such as `\"C059\"`", .required = true},
+    {.section = S::Profile, .key = "frame_1e", .flag = "", .type = T::Object, .help = "`{\"pc_type\": \"0041\"}`: the port serves the A-compatible 1E frame, binary and ASCII, and 1E PC type read answers the low byte of `pc_type`; without it 1E bytes are no frame there (skipped unanswered, as on an iQ-R built-in port). [frames.md](frames.md)"},
+    {.section = S::Profile, .key = "station_extended_frame", .flag = "", .type = T::Boolean, .default_text = "`false`", .help = "`true`: the port serves the station-number-extended frame (`68 00`, binary; CC-Link IE TSN modules, profile `RJ71GN11-T2`); without it those bytes are no frame there. [frames.md](frames.md)"},
+    {.section = S::Profile, .key = "pipeline", .flag = "", .type = T::Object, .default_text = "no limit", .help = "`{\"buffer\": N, \"over_limit\": \"CEE0\"}`: commands per connection — of a pipelined burst, 1 + N ÷ (open connections) requests are served, the rest get `over_limit` (an end code, `silence` or `close`; default CEE0). [end-codes.md](end-codes.md#commands-per-connection-pipelining-limit)"},
+    {.section = S::Profile, .key = "iqr_subcommands", .flag = "", .type = T::String, .default_text = "required", .help = "the same choice as `frame_4e` for device commands in the iQ-R form (00□2/00□3)", .required = true},
+    {.section = S::Profile, .key = "unsupported_commands", .flag = "", .type = T::Array, .default_text = "none", .help = "further commands this port refuses with `end_codes.not_supported`, beyond what its family refuses"},
+    {.section = S::Profile, .key = "end_codes", .flag = "", .type = T::Object, .default_text = "required", .help = "`not_supported` (C059), `out_of_range` (4031 iQ-R, C056 Q/L), `not_accessible` (4030), `unknown_device` (C05B), `bad_unit` (C05C); optional `online_change_refused` (default 0055) and `system_protect` (default 4004)", .required = true},
+    {.section = S::Profile, .key = "online_change", .flag = "", .type = T::Boolean, .default_text = "`true`", .help = "the ports' default for `online_change`"},
+    {.section = S::Profile, .key = "limits", .flag = "", .type = T::Object, .default_text = "required", .help = "`batch_words`, `batch_bits_binary`, `batch_bits_ascii`, `block_points` (`{\"max\": N, \"end_code\": \"C051\"}`); `random_read_points`, `random_write_weight`, `random_write_bits`, `monitor_points`, `block_count` (`{\"q\": N, \"iqr\": N, \"end_code\": \"C054\"}` — the limit for the Q form and the iQ-R form); `loopback_bytes`; optional `extended_over_limit_code`", .required = true},
+    {.section = S::Profile, .key = "mixed_block_write", .flag = "", .type = T::String, .default_text = "required", .help = "1406 with word and bit blocks: `answer` or an end code (`\"C05B\"` R08CPU)", .required = true},
+    {.section = S::Profile, .key = "station_buffer_words", .flag = "", .type = T::Integer, .help = "0613/1613 reach a buffer of this many words of the port's own (QJ71E71-100) instead of the CPU buffer memory"},
+    {.section = S::Profile, .key = "device_sizes", .flag = "", .type = T::Object, .default_text = "required", .help = "points per area (areas left out do not exist on this CPU)", .required = true},
+    {.section = S::Profile, .key = "start_only_range_check", .flag = "", .type = T::Array, .default_text = "required", .help = "areas where only the start device is range-checked (iQ-R: `R`, `ZR`)", .required = true},
+    {.section = S::Profile, .key = "read_only_devices", .flag = "", .type = T::Array, .default_text = "required", .help = "areas that cannot be written over this port (`S`: 4030)", .required = true},
+    {.section = S::Profile, .key = "size_registers", .flag = "", .type = T::Array, .default_text = "required", .help = "`{\"device\": \"D\", \"sd\": 280, \"bits\": 32}`: the SD registers that publish each size", .required = true},
+    {.section = S::Profile, .key = "zr_ascii_hex", .flag = "", .type = T::Boolean, .default_text = "required", .help = "`true` to number ZR in hexadecimal in ASCII frames (the manuals' form); iQ-R CPUs use decimal", .required = true},
+    {.section = S::Profile, .key = "max_connections", .flag = "", .type = T::Integer, .min = 1, .max = 4096, .default_text = "64", .help = "the ports' default `max_connections`, the CPU's connection count ([Connections per port](#connections-per-port))", .fix = "write the CPU's connection count, e.g. 16"},
+    {.section = S::Profile, .key = "manual_vs_hardware", .flag = "", .type = T::Object, .help = "where the manuals and real CPUs differ, keyed by topic: `{\"mixed_block_write\": {\"what\": \"1406 with word and bit blocks together\", \"manual\": \"served\", \"hardware\": \"C05B (R08CPU)\", \"follows\": \"hardware\"}}`; `follows` is `manual` or `hardware`. A profile that extends another changes one topic key by key. Listed in [compatibility.md](compatibility.md#where-the-manuals-and-real-cpus-differ)"},
+    {.section = S::Profile, .key = "xy_radix", .flag = "", .type = T::Integer, .default_text = "16", .help = "`8` numbers X and Y (and DX/DY) in octal, as an iQ-F CPU does ([X/Y numbering](#xy-numbering-fx5-octal))"},
+    {.section = S::Profile, .key = "timing", .flag = "", .type = T::Object, .default_text = "see timing.md", .help = "`{\"ke_ms\": 3.9, \"ke_ascii_ms\": 3.9, \"kdt_ms\": 0.003, \"kdt_ascii_ms\": 0.0045, \"scan_wait\": true}`: the response-time model's constants for this CPU (sources in [timing.md](timing.md))"},
+    {.section = S::Profile, .key = "file_drives", .flag = "", .type = T::Object, .default_text = "none", .help = "the CPU's file drives, keyed by number: `{\"2\": {\"kind\": \"sd_card\", \"capacity\": 8388608, \"present\": true, \"write_protect\": false}, \"1\": {\"kind\": \"device_label_memory\", \"alias_of\": 3}}`. `kind` is `program_memory`, `sram_card`, `sd_card`, `standard_ram`, `standard_rom`, `device_label_memory` or `data_memory`; `capacity` in bytes; `present` (default `true`) and `write_protect` (default `false`) are the defaults the configuration's `drives` may change. A profile that `extends` another changes one drive key by key and removes one with `null`. Without drives the port refuses the file commands (C059) ([files.md](files.md#drives-per-family))"},
+    {.section = S::Profile, .key = "file_end_codes", .flag = "", .type = T::Object, .default_text = "with `file_drives`", .help = "the end code of each refused file operation — `no_drive`, `bad_name`, `not_found`, `exists`, `not_a_file`, `no_capacity`, `write_protected`, `read_only`, `locked`, `password`, `bad_pointer`, `not_write_mode`, `out_of_range`, `too_many_open`, `host_error`, `run_state` ([end-codes.md](end-codes.md#file-commands-1810182a))"},
+    {.section = S::Profile, .key = "remote_password_length", .flag = "", .type = T::Array, .help = "`[min, max]` characters of the remote password: `[4, 4]` Q/L, `[6, 32]` iQ-R and iQ-F; without it 1630/1631 answer `not_supported` and `cpu.password` is refused"},
+};
+// clang-format on
+
+constexpr std::string_view kTables[] = {"cli", "station", "port", "http", "cpu", "program", "timing", "profile"};
+
+std::string_view table_of(const Setting& row) {
+    if (!row.doc_table.empty()) return row.doc_table;
+    switch (row.section) {
+        case S::CommandLine: return "";
+        case S::Plant: return "";
+        case S::Station: return "station";
+        case S::Port: return "port";
+        case S::Http: return "http";
+        case S::Cpu: return "cpu";
+        case S::Program: return "program";
+        case S::TimerLimit: return "program";
+        case S::Timing: return "timing";
+        case S::Profile: return "profile";
+    }
+    return "";
+}
+
+std::string number_text(double v) {
+    if (v == std::floor(v) && std::fabs(v) < 1e18) return std::to_string(static_cast<std::int64_t>(v));
+    std::ostringstream text;
+    text << v;
+    return text.str();
+}
+
+std::vector<std::string_view> choices_of(const Setting& row) {
+    std::vector<std::string_view> list;
+    for (std::string_view rest = row.choices; !rest.empty();) {
+        auto bar = rest.find('|');
+        list.push_back(rest.substr(0, bar));
+        rest = bar == std::string_view::npos ? std::string_view() : rest.substr(bar + 1);
+    }
+    return list;
+}
+
+std::string type_text(const Setting& row) {
+    if (!row.doc_type.empty()) return std::string(row.doc_type);
+    switch (row.type) {
+        case T::String: return "string";
+        case T::Integer:
+        case T::Number: return "number";
+        case T::Boolean: return "boolean";
+        case T::Array: return "array";
+        case T::Object: return "object";
+        case T::None: return "—";
+        case T::Choice: {
+            std::string text;
+            for (auto c : choices_of(row)) text += std::string(text.empty() ? "" : " / ") + "`\"" + std::string(c) + "\"`";
+            return text;
+        }
+    }
+    return "";
+}
+
+std::string key_text(const Setting& row) {
+    std::string prefix;
+    if (row.section == S::Cpu) prefix = "cpu.";
+    if (row.section == S::TimerLimit) prefix = "timer_limit.";
+    return "`" + prefix + std::string(row.key) + "`";
+}
+
+std::string default_cell(const Setting& row) {
+    auto d = row.default_text;
+    if (d.empty()) return "—";
+    // Numbers and quoted JSON values are code; prose is not.
+    if (d.front() == '"' || (d.find_first_not_of("0123456789.") == std::string_view::npos))
+        return "`" + std::string(d) + "`";
+    return std::string(d);
+}
+
+std::string flag_cell(const Setting& row) {
+    auto f = row.long_flag();
+    std::string text = "`--" + std::string(f);
+    if (auto comma = row.flag.find(','); comma != std::string_view::npos)
+        text += "`, `-" + std::string(row.flag.substr(comma + 1));
+    return text + "`";
+}
+
+std::string key_path(const Setting& row) {
+    if (row.key.empty()) return "—";
+    std::string prefix;
+    switch (row.section) {
+        case S::Port: prefix = "ports[]."; break;
+        case S::Http: prefix = "http."; break;
+        case S::Cpu: prefix = "cpu."; break;
+        case S::Program: prefix = "cpu.program."; break;
+        case S::TimerLimit: prefix = "cpu.program.timer_limit."; break;
+        case S::Timing: prefix = "timing."; break;
+        default: break;
+    }
+    return "`" + prefix + std::string(row.key) + "`";
+}
+
+nlohmann::json schema_of(const Setting& row);
+
+nlohmann::json object_schema(Section section, std::initializer_list<std::string_view> extra = {}) {
+    nlohmann::json properties = nlohmann::json::object();
+    nlohmann::json required = nlohmann::json::array();
+    for (const auto& row : kSettings) {
+        if (row.section != section || row.key.empty()) continue;
+        properties[std::string(row.key)] = schema_of(row);
+        if (row.required) required.push_back(row.key);
+    }
+    for (auto key : extra)
+        properties[std::string(key)] = {{"description", "read by the protocol faces (docs/configuration.md#station-kind-and-other-protocols)"}};
+    nlohmann::json schema = {{"type", "object"}, {"properties", properties}, {"additionalProperties", false}};
+    if (!required.empty()) schema["required"] = required;
+    return schema;
+}
+
+nlohmann::json schema_of(const Setting& row) {
+    nlohmann::json s;
+    auto sub = [&](Section section) {
+        s = object_schema(section);
+        s["description"] = row.help;
+    };
+    if (row.section == S::Station && row.key == "ports") {
+        s = {{"type", "array"}, {"items", object_schema(S::Port)}};
+    } else if (row.section == S::Station && row.key == "http") {
+        sub(S::Http);
+    } else if (row.section == S::Station && row.key == "cpu") {
+        sub(S::Cpu);
+    } else if (row.section == S::Station && row.key == "timing") {
+        sub(S::Timing);
+    } else if (row.section == S::Cpu && row.key == "program") {
+        sub(S::Program);
+    } else if (row.section == S::Program && row.key == "timer_limit") {
+        sub(S::TimerLimit);
+    } else {
+        switch (row.type) {
+            case T::String: s["type"] = "string"; break;
+            case T::Integer: s["type"] = "integer"; break;
+            case T::Number: s["type"] = "number"; break;
+            case T::Boolean: s["type"] = "boolean"; break;
+            case T::Array: s["type"] = "array"; break;
+            case T::Object: s["type"] = "object"; break;
+            case T::Choice: {
+                s["type"] = "string";
+                auto list = nlohmann::json::array();
+                for (auto c : choices_of(row)) list.push_back(c);
+                s["enum"] = list;
+                break;
+            }
+            case T::None: break;
+        }
+        if (row.key == "labels") s.erase("type");   // a list, or the name of a CSV file
+        // A template's port may be an expression in i ("20000+i"): plant_config.cpp resolves it first.
+        if (row.key == "tcp_port" || row.key == "udp_port" || (row.section == S::Port && row.key == "port"))
+            s["type"] = nlohmann::json::array({"integer", "string"});
+        if (row.has_range() && (row.type == T::Integer || row.type == T::Number) && !(row.key == "seed")) {
+            s["minimum"] = row.type == T::Integer ? nlohmann::json(static_cast<std::uint64_t>(row.min)) : nlohmann::json(row.min);
+            s["maximum"] = row.type == T::Integer ? nlohmann::json(static_cast<std::uint64_t>(row.max)) : nlohmann::json(row.max);
+        }
+        s["description"] = row.help.empty() ? row.doc : row.help;
+    }
+    return s;
+}
+
+}  // namespace
+
+std::span<const Setting> all_settings() { return kSettings; }
+
+const Setting& setting(Section section, std::string_view key) {
+    for (const auto& row : kSettings)
+        if (row.section == section && row.key == key) return row;
+    throw std::logic_error("settings table: no row for key '" + std::string(key) + "'");
+}
+
+const Setting* setting_by_flag(std::string_view flag) {
+    for (const auto& row : kSettings)
+        if (!row.flag.empty() && row.long_flag() == flag) return &row;
+    return nullptr;
+}
+
+std::vector<std::string_view> section_keys(Section section) {
+    std::vector<std::string_view> keys;
+    for (const auto& row : kSettings)
+        if (row.section == section && !row.key.empty()) keys.push_back(row.key);
+    return keys;
+}
+
+std::string_view section_name(Section section) {
+    switch (section) {
+        case S::CommandLine: return "(command line)";
+        case S::Plant: return "(plant)";
+        case S::Station: return "";
+        case S::Port: return "ports[]";
+        case S::Http: return "http";
+        case S::Cpu: return "cpu";
+        case S::Program: return "cpu.program";
+        case S::TimerLimit: return "cpu.program.timer_limit";
+        case S::Timing: return "timing";
+        case S::Profile: return "(profile)";
+    }
+    return "";
+}
+
+bool is_choice(const Setting& row, std::string_view value) {
+    for (auto c : choices_of(row))
+        if (c == value) return true;
+    return false;
+}
+
+void check_keys(const JsonAt& object, Section section, std::initializer_list<std::string_view> extra) {
+    auto keys = section_keys(section);
+    keys.insert(keys.end(), extra.begin(), extra.end());
+    object.only_keys(std::span<const std::string_view>(keys));
+}
+
+std::uint64_t whole_setting(const JsonAt& object, Section section, std::string_view key) {
+    const auto& row = setting(section, key);
+    return object[key].whole(static_cast<std::uint64_t>(row.min), static_cast<std::uint64_t>(row.max), row.fix);
+}
+
+double number_setting(const JsonAt& object, Section section, std::string_view key) {
+    const auto& row = setting(section, key);
+    return object[key].number(row.min, row.max, row.fix);
+}
+
+void check_flag_value(const Setting& row, double value) {
+    if (!row.has_range() || row.own_check) return;
+    auto min = row.min / row.flag_scale, max = row.max / row.flag_scale;
+    if (value >= min && value <= max) return;
+    auto fix = row.flag_fix.empty() ? row.fix : row.flag_fix;
+    // "--tcp-port 70000: not a port number; use 0-65535": a fix that names the problem itself.
+    bool names_problem = fix.starts_with("not ") || fix.starts_with("must ");
+    throw ConfigError("--" + std::string(row.long_flag()) + " " + number_text(value) + ": " +
+                      (names_problem ? "" : "out of range; ") + std::string(fix));
+}
+
+std::vector<std::string_view> settings_markdown_tables() { return {std::begin(kTables), std::end(kTables)}; }
+
+std::string settings_markdown(std::string_view table) {
+    std::string out;
+    if (table == "cli") {
+        out = "| Option | Key | Default | Meaning |\n|---|---|---|---|\n";
+        for (const auto& row : kSettings) {
+            if (row.flag.empty()) continue;
+            std::string d = row.default_text.empty() ? "—" : default_cell(row);
+            if (row.flag == "no-http") d = "—";
+            out += "| " + flag_cell(row) + " | " + key_path(row) + " | " + d + " | " + std::string(row.help) + " |\n";
+        }
+        return out;
+    }
+    out = "| Key | Type | Default | Meaning |\n|---|---|---|---|\n";
+    for (const auto& row : kSettings) {
+        if (row.key.empty() || table_of(row) != table) continue;
+        auto meaning = std::string(row.doc.empty() ? row.help : row.doc);
+        if (row.has_range() && !row.own_check && row.doc.empty() && row.doc_type.empty() &&
+            (row.section == S::Program || row.section == S::TimerLimit || row.section == S::Timing))
+            meaning += " (" + number_text(row.min) + "–" + number_text(row.max) + ")";
+        auto key = key_text(row);
+        out += "| " + key + " | " + type_text(row) + " | " + default_cell(row) + " | " + meaning + " |\n";
+    }
+    return out;
+}
+
+nlohmann::json settings_json_schema() {
+    auto station = object_schema(S::Station, {"kind", "hostlink", "jw51cm"});
+    auto plant = station;
+    plant["properties"]["threads"] = schema_of(setting(S::Plant, "threads"));
+    auto stations = schema_of(setting(S::Plant, "stations"));
+    // A station entry: its own keys, or a template of them ("template", "count", "first").
+    auto entry = station;
+    entry["properties"]["template"] = {{"type", "object"}, {"description", "the keys of every station it makes ({i} placeholders)"}};
+    entry["properties"]["count"] = {{"type", "integer"}, {"minimum", 1}, {"maximum", 10000}};
+    entry["properties"]["first"] = {{"type", "integer"}, {"minimum", 0}, {"maximum", 1000000}};
+    stations["items"] = entry;
+    plant["properties"]["stations"] = stations;
+    plant["$schema"] = "https://json-schema.org/draft/2020-12/schema";
+    plant["title"] = "slmp-sim configuration (generated from config/settings.cpp; docs/configuration.md)";
+    return plant;
+}
+
+}  // namespace slmp::config

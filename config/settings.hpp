@@ -1,0 +1,108 @@
+// The settings table: every setting of a station, a plant and the command line
+// is one row — its JSON key, its command-line flag, type, range, default and a
+// line of help. The JSON loaders' unknown-key checks and range checks, the
+// command-line parser and --help (server/options.cpp), docs/configuration.md's
+// option tables and config/schema.json are built from or checked against it
+// (tests/unit/test_settings_table.cpp). Model: Redis's standardConfig table.
+//
+// Not here: the other protocol faces' keys and flags ("kind", "hostlink",
+// "jw51cm", --hostlink-port, --serial) — they belong to the faces
+// (config/frontend_config.cpp), and the station's key check names them as extras.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace slmp::config {
+
+class JsonAt;
+
+// The JSON object a key sits in ("ports": [ {…} ] is Port, "cpu": {"program": {…}} is Program).
+enum class Section : std::uint8_t {
+    CommandLine,   // a flag with no key in the file (--help, --config, --ready-file, ...)
+    Plant,         // the top of a file that may list "stations"
+    Station,       // one station's top-level keys (and a plant's defaults)
+    Port,          // an entry of "ports"
+    Http,          // "http"
+    Cpu,           // "cpu"
+    Program,       // "cpu": {"program"}
+    TimerLimit,    // "cpu": {"program": {"timer_limit"}}
+    Timing,        // "timing"
+    Profile,       // a CPU profile file (config/profiles/*.json)
+};
+
+enum class SettingType : std::uint8_t { String, Integer, Number, Boolean, Choice, Array, Object, None };
+
+// What the flag's value is on the command line (Boost.Program_options' value type).
+enum class FlagArg : std::uint8_t {
+    None,           // a switch: --no-http, --help
+    Text,           // std::string
+    Unsigned,       // unsigned
+    Size,           // std::size_t
+    Real,           // double
+    UnsignedList,   // std::vector<unsigned>, multitoken: --tcp-port 5000 5001
+    TextList,       // std::vector<std::string>, repeatable: --scenario a.json --scenario b.json
+};
+
+struct Setting {
+    Section section;
+    std::string_view key;            // the JSON key in `section`; empty: command line only
+    std::string_view flag;           // "profile,p" as Program_options takes it; empty: file only
+    SettingType type;
+    FlagArg flag_arg = FlagArg::None;
+    double min = 0, max = 0;         // Integer/Number: the accepted range (for the key's unit)
+    std::string_view choices = {};   // Choice: "binary|ascii|auto"
+    std::string_view default_text = {};   // as the docs show it; empty: none
+    std::string_view help = {};      // one line: --help, and the docs when `doc` is empty
+    std::string_view fix = {};       // the hint of a key's range error: "use 1 to 1000 (default 10)"
+    std::string_view doc = {};       // the docs' "Meaning" when it says more than `help`
+    std::string_view doc_type = {};  // the docs' "Type" when the type's name says too little
+    std::string_view doc_table = {}; // the docs table it is listed in, when not its section's
+    double flag_scale = 1;           // the key's value = the flag's value × this (--idle-timeout s, idle_timeout_ms)
+    std::string_view flag_fix = {};  // the hint of the flag's range error (default `fix`)
+    bool required = false;           // the key must be given (in its object)
+    bool own_check = false;          // range and form checked by its reader (numbers that go in pairs, steps)
+
+    bool has_range() const { return min != 0 || max != 0; }
+    // "profile" of "profile,p".
+    std::string_view long_flag() const { return flag.substr(0, flag.find(',')); }
+};
+
+// Every row, in the order --help lists the flags and the docs list the keys.
+std::span<const Setting> all_settings();
+// The row of a key in a section; throws std::logic_error when there is none (a programming error).
+const Setting& setting(Section section, std::string_view key);
+// The row of a long flag ("tcp-port"), or null.
+const Setting* setting_by_flag(std::string_view flag);
+// The keys of a section, in table order.
+std::vector<std::string_view> section_keys(Section section);
+// The JSON pointer style name of a section: "" (Station), "ports[]", "http", "cpu", "cpu.program", ...
+std::string_view section_name(Section section);
+
+// The object must hold only its section's keys (and `extra`, keys read by
+// another part: the faces'); an unknown key fails naming itself and the list.
+void check_keys(const JsonAt& object, Section section, std::initializer_list<std::string_view> extra = {});
+// Whether `value` is one of a Choice row's choices ("info" of log_level).
+bool is_choice(const Setting& row, std::string_view value);
+// A key's value checked against its row: a whole number (Integer) or a number
+// (Number) within the row's range, with the row's fix in the error.
+std::uint64_t whole_setting(const JsonAt& object, Section section, std::string_view key);
+double number_setting(const JsonAt& object, Section section, std::string_view key);
+
+// A flag's value against its row's range (in the flag's unit); throws
+// ConfigError "--flag value: out of range; fix".
+void check_flag_value(const Setting& row, double value);
+
+// The generated docs: a Markdown table ("cli", "station", "port", "http",
+// "cpu", "program", "timing", "profile") and the JSON Schema of a configuration file.
+std::string settings_markdown(std::string_view table);
+std::vector<std::string_view> settings_markdown_tables();
+nlohmann::json settings_json_schema();
+
+}  // namespace slmp::config

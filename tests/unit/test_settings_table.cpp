@@ -1,0 +1,344 @@
+// The settings table (config/settings.cpp) against everything built from it:
+// every row's JSON key is accepted by its loader and its flag by the command
+// line; unknown keys are refused naming the key and the fix; the docs' option
+// tables and config/schema.json are what the table generates.
+// SLMP_UPDATE_DOCS=1 rewrites the docs tables and the schema from the table.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "config/config.hpp"
+#include "config/plant_config.hpp"
+#include "config/settings.hpp"
+#include "scenarios/loader.hpp"
+#include "server/options.hpp"
+
+using namespace slmp;
+using config::Section;
+using config::Setting;
+using config::SettingType;
+using nlohmann::json;
+
+namespace {
+
+const std::filesystem::path kSource = SLMP_SOURCE_DIR;
+
+bool updating() {
+    const char* env = std::getenv("SLMP_UPDATE_DOCS");
+    return env && std::string(env) == "1";
+}
+
+std::string read_text(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+void write_text(const std::filesystem::path& file, const std::string& text) { std::ofstream(file) << text; }
+
+// A value the key takes: the scalars from the row, the rest by hand.
+json sample(const Setting& row) {
+    static const std::map<std::string, json> samples = {
+        {"profile", "R04CPU"}, {"bind", "127.0.0.1"}, {"name", "press-1"}, {"ports", json::array()},
+        {"device_sizes", {{"D", 2000}}}, {"devices", {{"D0", 1}}}, {"modules", json::array()},
+        {"networks", json::array()}, {"cpus", json::array()}, {"scenarios", json::array()},
+        {"http", json::object()}, {"cpu", json::object()}, {"labels", json::array()}, {"structures", json::array()},
+        {"state_dir", "/tmp/slmp-settings-test"}, {"drives", json::object()}, {"timing", json::object()},
+        {"stations", json::array({{{"name", "a"}}})}, {"password", "abcdef"},
+        {"password_lockout", {{"attempts", 3}}}, {"latch", {{"D", {0, 9}}}}, {"timers", json::array()},
+        {"counters", json::array()}, {"program", {{"file", "line1.csv"}}}, {"error", {{"code", "1900"}}},
+        {"file", "line1.csv"}, {"comments", "comments.csv"}, {"timer_limit", json::object()}, {"seed", 7},
+        {"wdt_ms", 200}};
+    if (auto it = samples.find(std::string(row.key)); it != samples.end()) return it->second;
+    switch (row.type) {
+        case SettingType::Integer: return static_cast<std::uint64_t>(row.max);
+        case SettingType::Number: return row.max;
+        case SettingType::Boolean: return true;
+        case SettingType::Choice: return std::string(row.choices.substr(0, row.choices.find('|')));
+        default: FAIL("no sample value for key " << row.key); return nullptr;
+    }
+}
+
+// A configuration document that holds `value` under the row's key.
+json document(Section section, const std::string& key, const json& value) {
+    switch (section) {
+        case Section::Plant:
+        case Section::Station: return {{key, value}};
+        case Section::Port: {
+            json port = {{"transport", "tcp"}, {"port", 0}};
+            if (key == "network" || key == "station") port["network"] = port["station"] = 1;   // given together
+            port[key] = value;
+            return {{"ports", json::array({port})}};
+        }
+        case Section::Http: return {{"http", {{key, value}}}};
+        case Section::Cpu: return {{"cpu", {{key, value}}}};
+        case Section::Program: {
+            json program = {{"file", "line1.csv"}};
+            program[key] = value;
+            return {{"cpu", {{"program", program}}}};
+        }
+        case Section::TimerLimit: return {{"cpu", {{"program", {{"file", "line1.csv"}, {"timer_limit", {{key, value}}}}}}}};
+        case Section::Timing: return {{"timing", {{key, value}}}};
+        case Section::CommandLine:
+        case Section::Profile: break;   // a profile file: its own test below
+    }
+    return json::object();
+}
+
+config::PlantConfig parse(const json& doc) { return config::parse_plant_config(doc.dump(), "settings.json", "/tmp", ""); }
+
+struct Args {
+    std::vector<std::string> words{"slmp-sim"};
+    server::CommandLine run() {
+        std::vector<char*> argv;
+        for (auto& w : words) argv.push_back(w.data());
+        return server::parse_command_line(static_cast<int>(argv.size()), argv.data());
+    }
+};
+
+// The docs blocks between "<!-- settings: NAME -->" and "<!-- /settings -->".
+struct Block {
+    std::string name;
+    std::size_t begin, end;   // the text between the two markers
+};
+std::vector<Block> blocks(const std::string& text) {
+    std::vector<Block> list;
+    const std::string open = "<!-- settings: ", close = "<!-- /settings -->";
+    for (auto pos = text.find(open); pos != std::string::npos; pos = text.find(open, pos + 1)) {
+        auto name_end = text.find(" -->", pos);
+        auto begin = text.find('\n', name_end) + 1;
+        auto end = text.find(close, begin);
+        REQUIRE(end != std::string::npos);
+        list.push_back({text.substr(pos + open.size(), name_end - pos - open.size()), begin, end});
+    }
+    return list;
+}
+
+}  // namespace
+
+TEST_CASE("each key and each flag is one row", "[settings]") {
+    std::map<std::pair<int, std::string>, int> keys;
+    std::map<std::string, int> flags;
+    for (const auto& row : config::all_settings()) {
+        if (!row.key.empty()) CHECK(++keys[{static_cast<int>(row.section), std::string(row.key)}] == 1);
+        if (!row.flag.empty()) CHECK(++flags[std::string(row.long_flag())] == 1);
+        INFO(row.key << " " << row.flag);
+        CHECK((row.key.empty() == (row.section == Section::CommandLine)));
+        CHECK(!(row.help.empty() && row.doc.empty() && row.key != "transport"));
+        if (row.has_range() && !row.own_check) CHECK(!row.fix.empty());
+        if (row.type == SettingType::Choice) CHECK(!row.choices.empty());
+    }
+    // The faces' flags and keys live with the faces, not here.
+    CHECK(config::setting_by_flag("hostlink-port") == nullptr);
+    CHECK(config::setting_by_flag("serial") == nullptr);
+    for (auto key : config::section_keys(Section::Station)) CHECK((key != "hostlink" && key != "jw51cm" && key != "kind"));
+    // The HTTP API's clock speed check uses the same range.
+    CHECK(config::setting(Section::Station, "clock_speed").min == config::kMinClockSpeed);
+    CHECK(config::setting(Section::Station, "clock_speed").max == config::kMaxClockSpeed);
+    CHECK(config::setting(Section::Station, "clock_speed").fix == config::kClockSpeedFix);
+}
+
+TEST_CASE("every row's JSON key is accepted by its loader", "[settings]") {
+    for (const auto& row : config::all_settings()) {
+        if (row.key.empty() || row.section == Section::Profile) continue;
+        auto doc = document(row.section, std::string(row.key), sample(row));
+        INFO(doc.dump());
+        CHECK_NOTHROW(parse(doc));
+    }
+}
+
+TEST_CASE("a key's value outside its row's range is refused with the row's fix", "[settings]") {
+    for (const auto& row : config::all_settings()) {
+        if (row.key.empty() || !row.has_range() || row.own_check || row.section == Section::Profile) continue;
+        auto too_big = row.type == SettingType::Integer ? json(static_cast<std::uint64_t>(row.max) + 1) : json(row.max * 2 + 1);
+        auto doc = document(row.section, std::string(row.key), too_big);
+        INFO(doc.dump());
+        CHECK_THROWS_WITH(parse(doc), Catch::Contains("/" + std::string(row.key) + ": ") &&
+                                          Catch::Contains(std::string(row.fix)));
+        if (row.min > 0) {
+            auto too_small = row.type == SettingType::Integer ? json(static_cast<std::uint64_t>(row.min) - 1) : json(0);
+            auto small_doc = document(row.section, std::string(row.key), too_small);
+            INFO(small_doc.dump());
+            CHECK_THROWS_WITH(parse(small_doc), Catch::Contains(std::string(row.fix)));
+        }
+    }
+}
+
+TEST_CASE("an unknown key is refused naming the key and the keys it may be", "[settings]") {
+    for (auto section : {Section::Station, Section::Port, Section::Http, Section::Cpu, Section::Program,
+                         Section::TimerLimit, Section::Timing}) {
+        auto doc = document(section, "no_such_key", 1);
+        std::string list;
+        for (auto key : config::section_keys(section)) list += (list.empty() ? "" : ", ") + std::string(key);
+        if (section == Section::Station) list += ", kind, hostlink, jw51cm";
+        INFO(doc.dump());
+        CHECK_THROWS_WITH(parse(doc), Catch::Contains("/no_such_key: unknown key; use one of: " + list));
+    }
+    // In a plant too: a station entry's typo names the station.
+    CHECK_THROWS_WITH(parse(json{{"stations", {{{"name", "a"}, {"prfile", "R08CPU"}}}}}),
+                      Catch::Contains("station 'a': /prfile: unknown key; use one of: profile, bind"));
+}
+
+TEST_CASE("a profile takes the profile rows' keys, and only those", "[settings]") {
+    // Every key the built-in profiles use is a row (they load, so the loader took them).
+    std::set<std::string> used;
+    for (const auto& file : std::filesystem::directory_iterator(kSource / "config/profiles")) {
+        auto profile = json::parse(read_text(file.path()));
+        for (const auto& [key, _] : profile.items()) used.insert(key);
+    }
+    auto keys = config::section_keys(Section::Profile);
+    for (const auto& key : used) {
+        INFO(key);
+        CHECK(std::find(keys.begin(), keys.end(), key) != keys.end());
+    }
+    std::string list;
+    for (auto key : keys) list += (list.empty() ? "" : ", ") + std::string(key);
+    CHECK_THROWS_WITH(config::parse_profile(R"({"extends": "R08CPU", "name": "X", "description": "x", "zzz": 1})", "p.json"),
+                      Catch::Contains("p.json: /zzz: unknown key; use one of: " + list));
+    CHECK_THROWS_WITH(config::parse_profile(R"({"extends": "R08CPU", "name": "X", "description": "x", "max_connections": 0})", "p.json"),
+                      Catch::Contains("/max_connections: must be at least 1; write the CPU's connection count"));
+    for (const auto& file : std::filesystem::directory_iterator(kSource / "config/profiles")) {
+        INFO(file.path());
+        CHECK_NOTHROW(config::load_profile(file.path().string()));
+    }
+}
+
+TEST_CASE("every row's flag is accepted by the command line", "[settings]") {
+    auto dir = std::filesystem::temp_directory_path() / "slmp-settings-flags";
+    std::filesystem::create_directories(dir);
+    write_text(dir / "c.json", "{}");
+    write_text(dir / "labels.json", R"({"labels": []})");
+    const std::map<std::string, std::vector<std::string>> values = {
+        {"config", {(dir / "c.json").string()}}, {"check-config", {(dir / "c.json").string()}},
+        {"labels", {(dir / "labels.json").string()}}, {"drive", {"4=" + dir.string()}},
+        {"network-no", {"1", "--station-no", "1"}}, {"station-no", {"1", "--network-no", "1"}},
+        {"profile", {"R04CPU"}}, {"switch", {"STOP"}}, {"clock", {"frozen"}}};
+    for (const auto& row : config::all_settings()) {
+        if (row.flag.empty()) continue;
+        const std::string flag(row.long_flag());
+        Args args;
+        args.words.push_back("--" + flag);
+        if (auto it = values.find(flag); it != values.end()) {
+            args.words.insert(args.words.end(), it->second.begin(), it->second.end());
+        } else if (row.flag_arg != config::FlagArg::None) {
+            if (row.type == SettingType::Choice) args.words.emplace_back(row.choices.substr(0, row.choices.find('|')));
+            else if (row.has_range()) args.words.push_back(std::to_string(static_cast<std::uint64_t>(row.max / row.flag_scale)));
+            else args.words.push_back((dir / "file").string());
+        }
+        if (flag != "tcp-port" && flag != "udp-port") args.words.insert(args.words.end(), {"--tcp-port", "0"});
+        INFO(flag);
+        std::ostringstream swallow;   // --help, --version, --list-profiles print
+        auto* old = std::cout.rdbuf(swallow.rdbuf());
+        CHECK_NOTHROW(args.run());
+        std::cout.rdbuf(old);
+    }
+}
+
+TEST_CASE("a flag outside its row's range is refused naming the flag", "[settings]") {
+    for (const auto& row : config::all_settings()) {
+        if (row.flag.empty() || !row.has_range() || row.own_check) continue;
+        const std::string flag(row.long_flag());
+        Args args;
+        args.words = {"slmp-sim", "--" + flag, std::to_string(static_cast<std::uint64_t>(row.max / row.flag_scale) + 1)};
+        if (flag != "tcp-port" && flag != "udp-port") args.words.insert(args.words.end(), {"--tcp-port", "0"});
+        INFO(flag);
+        auto fix = row.flag_fix.empty() ? row.fix : row.flag_fix;
+        CHECK_THROWS_WITH(args.run(), Catch::StartsWith("--" + flag + " ") && Catch::Contains(std::string(fix)));
+    }
+}
+
+TEST_CASE("--help lists every flag of the table with its help", "[settings]") {
+    Args args;
+    args.words.push_back("--help");
+    std::ostringstream out;
+    auto* old = std::cout.rdbuf(out.rdbuf());
+    args.run();
+    std::cout.rdbuf(old);
+    for (const auto& row : config::all_settings())
+        if (!row.flag.empty()) CHECK(out.str().find("--" + std::string(row.long_flag())) != std::string::npos);
+    CHECK(out.str().find("--hostlink-port") != std::string::npos);
+}
+
+TEST_CASE("the docs' option tables are the table's", "[settings]") {
+    std::map<std::string, int> seen;
+    for (auto doc : {"docs/configuration.md", "docs/program.md"}) {
+        auto file = kSource / doc;
+        auto text = read_text(file);
+        auto list = blocks(text);
+        // From the end, so a rewrite keeps the earlier offsets.
+        for (auto it = list.rbegin(); it != list.rend(); ++it) {
+            ++seen[it->name];
+            auto want = config::settings_markdown(it->name);
+            INFO(doc << ": table '" << it->name << "' differs from config/settings.cpp; run the unit tests with "
+                        "SLMP_UPDATE_DOCS=1 to rewrite it");
+            if (updating()) text.replace(it->begin, it->end - it->begin, want);
+            else CHECK(text.substr(it->begin, it->end - it->begin) == want);
+        }
+        if (updating()) write_text(file, text);
+    }
+    for (auto name : config::settings_markdown_tables()) {
+        INFO("table " << name);
+        CHECK(seen[std::string(name)] == 1);
+    }
+}
+
+TEST_CASE("config/schema.json is the table's", "[settings]") {
+    auto file = kSource / "config/schema.json";
+    auto want = config::settings_json_schema().dump(2) + "\n";
+    if (updating()) write_text(file, want);
+    INFO("config/schema.json differs from config/settings.cpp; run the unit tests with SLMP_UPDATE_DOCS=1");
+    CHECK(read_text(file) == want);
+    // Every key the loaders take is in the schema, and nothing else is.
+    auto schema = json::parse(want);
+    for (auto key : config::section_keys(Section::Station)) CHECK(schema["properties"].contains(std::string(key)));
+    for (auto key : config::section_keys(Section::Port))
+        CHECK(schema["properties"]["ports"]["items"]["properties"].contains(std::string(key)));
+    CHECK(schema["properties"].contains("threads"));
+    CHECK(schema["additionalProperties"] == false);
+}
+
+// The scenario loader names the keys it takes when it refuses one; the schema's
+// objects (scenarios/schema.json) must list the same keys.
+TEST_CASE("scenarios/schema.json lists the keys the scenario loader takes", "[settings][scenarios]") {
+    auto schema = json::parse(read_text(kSource / "scenarios/schema.json"));
+    const auto& defs = schema["definitions"];
+    const std::vector<std::pair<std::string, json>> cases = {
+        {R"({"zzz": 1})", schema},
+        {R"({"initial": {"zzz": 1}})", defs["initial"]},
+        {R"({"initial": {"error": {"code": "1900", "zzz": 1}}})", defs["cpu_error"]},
+        {R"({"timeline": {"steps": [], "zzz": 1}})", defs["timeline"]},
+        {R"({"replay": {"file": "r.jsonl", "zzz": 1}})", defs["replay"]},
+        {R"({"triggers": [{"when": "M0", "do": [{"set": {"D0": 1}}], "zzz": 1}]})", defs["trigger"]},
+    };
+    for (const auto& [doc, object] : cases) {
+        INFO(doc);
+        std::string message;
+        try {
+            scenarios::parse_scenario(doc, "test.json");
+        } catch (const config::ConfigError& e) {
+            message = e.what();
+        }
+        const std::string marker = "unknown key; use one of: ";
+        auto at = message.find(marker);
+        REQUIRE(at != std::string::npos);
+        std::set<std::string> loader;
+        std::stringstream list(message.substr(at + marker.size()));
+        for (std::string key; std::getline(list, key, ',');) loader.insert(key.substr(key.find_first_not_of(' ')));
+        std::set<std::string> in_schema;
+        for (const auto& [key, _] : object["properties"].items()) in_schema.insert(key);
+        CHECK(loader == in_schema);
+        CHECK(object["additionalProperties"] == false);
+    }
+}
