@@ -30,6 +30,10 @@ void JsonAt::expect_array() const {
 }
 
 void JsonAt::only_keys(std::initializer_list<std::string_view> known) const {
+    only_keys(std::span<const std::string_view>(known.begin(), known.size()));
+}
+
+void JsonAt::only_keys(std::span<const std::string_view> known) const {
     expect_object();
     for (const auto& [key, _] : value_.items()) {
         bool ok = false;

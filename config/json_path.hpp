@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -30,6 +31,7 @@ public:
     void expect_array() const;
     // Every member must be one of `known`; an unknown key is usually a typo.
     void only_keys(std::initializer_list<std::string_view> known) const;
+    void only_keys(std::span<const std::string_view> known) const;
 
     std::string string() const;
     bool boolean() const;

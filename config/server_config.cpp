@@ -8,6 +8,7 @@
 #include "config/config_parts.hpp"
 #include "config/drive_config.hpp"
 #include "config/json_path.hpp"
+#include "frontends/face.hpp"
 
 namespace slmp::config {
 
@@ -138,10 +139,12 @@ DataCode parse_data_code(const std::string& text, const std::string& where) {
 }
 
 ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path& directory) {
-    root.only_keys({"name", "profile", "bind", "ports", "tcp_port", "udp_port", "max_request_bytes", "device_sizes",
+    std::vector<std::string_view> keys{"name", "profile", "bind", "ports", "tcp_port", "udp_port", "max_request_bytes", "device_sizes",
                     "devices", "log_level", "modules", "networks", "cpus", "http", "cpu", "state_dir",
                     "snapshot_interval_s", "restore", "clock_speed", "labels", "structures", "drives", "timing",
-                    "scenarios", "kind", "hostlink", "jw51cm"});   // the last three: parse_frontends_config
+                    "scenarios", "kind"};   // "kind" and the faces' sections: parse_frontends_config
+    for (const auto* face : frontends::faces()) keys.push_back(face->name());
+    root.only_keys(keys);
     ServerConfig c;
     if (root.has("name")) c.name = checked_station_name(root["name"]);
     if (root.has("profile")) c.profile = root["profile"].string();

@@ -24,8 +24,16 @@ constexpr const char* kVersion = "slmp-sim 0.1.0";
 // command line; the other transport keeps its ports.
 // Options that name one station's ports, files or identity: refused with a plant.
 constexpr const char* kOneStationOptions[] = {"profile", "bind", "tcp-port", "udp-port", "drive", "labels", "snapshot",
-                                              "record", "record-pcap", "hostlink-port", "serial", "network-no",
+                                              "record", "record-pcap", "network-no",
                                               "station-no", "program"};
+
+// ... and the protocol faces' (frontends/face.hpp).
+std::vector<std::string_view> one_station_options() {
+    std::vector<std::string_view> options(std::begin(kOneStationOptions), std::end(kOneStationOptions));
+    for (const auto* face : frontends::faces())
+        for (auto option : face->one_station_options()) options.push_back(option);
+    return options;
+}
 
 void replace_ports(config::ServerConfig& c, Transport transport, const std::vector<unsigned>& ports,
                    const char* option) {
@@ -130,26 +138,13 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
         c.clock_frozen = mode == "frozen";
     }
     if (vm.count("snapshot")) c.snapshot_file = vm["snapshot"].as<std::string>();
-    if (vm.count("hostlink-port")) {
-        auto port = vm["hostlink-port"].as<unsigned>();
-        if (port > 65535) throw ConfigError("--hostlink-port " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
-        config::enable_hostlink(frontends.hostlink);
-        frontends.hostlink.port.port = static_cast<std::uint16_t>(port);
-    }
-    if (vm.count("serial")) {
-        if (!frontends.hostlink.enabled)
-            throw ConfigError("--serial serves the Ladder Motion host link; give \"kind\": \"ladder-motion\", a \"hostlink\" "
-                              "section or --hostlink-port too");
-        frontends.hostlink.serial_path = vm["serial"].as<std::string>();
-    }
-    if (frontends.kind == config::StationKind::LadderMotion && !c.ports.empty())
-        throw ConfigError("a ladder-motion station serves no SLMP ports; leave out --tcp-port/--udp-port (its port is "
-                          "--hostlink-port or \"hostlink\": {\"tcp_port\": ...}), or use \"kind\": \"melsec\" to serve both");
-    if (frontends.kind == config::StationKind::SharpJw && (!c.ports.empty() || frontends.hostlink.enabled))
-        throw ConfigError("a sharp-jw station serves only the JW-51CM computer link; leave out --tcp-port/--udp-port/"
-                          "--hostlink-port (its ports are \"jw51cm\": {\"tcp_port\": ..., \"udp_port\": ...}), or use "
-                          "\"kind\": \"melsec\" to serve several protocols");
-    if (c.ports.empty() && !frontends.hostlink.enabled && !frontends.jw51cm.enabled)
+    // The protocol faces' own options (frontends/face.hpp), then: a station of a
+    // face's kind serves that face alone.
+    for (const auto* face : frontends::faces())
+        face->apply_options(vm, frontends.find(face->name()), [&]() -> frontends::Settings& { return frontends.enable(*face); });
+    if (const auto* only = frontends.kind_face(); only && (!c.ports.empty() || frontends.faces.size() > 1))
+        throw ConfigError(only->command_line_refusal());
+    if (c.ports.empty() && frontends.faces.empty())
         throw ConfigError((c.name.empty() ? std::string() : "station '" + c.name + "': ") + "no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
 }
 
@@ -162,9 +157,9 @@ CommandLine parse_command_line(int argc, char** argv) {
         ("version", "print the version and exit")
         ("list-profiles", "list the built-in CPU profiles and exit")
         ("profile,p", po::value<std::string>(), "CPU profile: a built-in name (default R08CPU) or a profile .json file")
-        ("config,c", po::value<std::string>(), "JSON configuration file (see docs/configuration.md)")
-        ("hostlink-port", po::value<unsigned>(), "serve the Ladder Motion host link on this TCP port too; 0 = any free port (docs/hostlink.md)")
-        ("serial", po::value<std::string>(), "also serve the host link on a pseudo-terminal and link PATH to it (RS-232C-style tools; needs a host link)")
+        ("config,c", po::value<std::string>(), "JSON configuration file (see docs/configuration.md)");
+    for (const auto* face : frontends::faces()) face->add_options(options);
+    options.add_options()
         ("tcp-port", po::value<std::vector<unsigned>>()->multitoken(), "TCP port(s) to serve; 0 = any free port (default 5000)")
         ("udp-port", po::value<std::vector<unsigned>>()->multitoken(), "UDP port(s) to serve; 0 = any free port (default 5000)")
         ("bind,b", po::value<std::string>(), "address to listen on (default 0.0.0.0)")
@@ -245,9 +240,9 @@ CommandLine parse_command_line(int argc, char** argv) {
         cl.plant.threads = n;
     }
     if (cl.plant.plant)
-        for (const char* option : kOneStationOptions)
-            if (vm.count(option))
-                throw ConfigError(std::string("--") + option + " sets one station, and the configuration is a plant of " +
+        for (std::string_view option : one_station_options())
+            if (vm.count(std::string(option)))
+                throw ConfigError("--" + std::string(option) + " sets one station, and the configuration is a plant of " +
                                   std::to_string(cl.plant.stations.size()) + " stations; give it in each station's "
                                   "entry in the file instead (docs/plants.md)");
     for (auto& station : cl.plant.stations) apply_station_options(vm, cl.plant.plant, station);
