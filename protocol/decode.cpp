@@ -61,11 +61,15 @@ Request::Frame frame_status(FrameScan::Status status) {
 bool Request::reads_devices() const { return spec && spec->device_command() && !spec->writes(); }
 bool Request::writes_devices() const { return spec && spec->device_command() && spec->writes(); }
 
+FrameScan Engine::frame(std::span<const std::uint8_t> input, DataCodePolicy policy) const {
+    const auto& port = ports_[0];
+    return scan_frame(input, Direction::Request, policy, options_.max_frame_bytes,
+                      FrameSet{port.frame_1e, port.station_extended_frame});
+}
+
 Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy policy, StationNumbers own) const {
     Request request;
-    const auto& port = ports_[0];
-    auto scan = scan_frame(input, Direction::Request, policy, options_.max_frame_bytes,
-                           FrameSet{port.frame_1e, port.station_extended_frame});
+    const auto scan = frame(input, policy);
     request.frame = frame_status(scan.status);
     request.size = scan.size;
     request.header = scan.header;

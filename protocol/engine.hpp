@@ -103,6 +103,10 @@ public:
     }
     const CpuSet& cpus() const { return cpus_; }
 
+    // Where the frame at the start of `input` ends, without decoding it: the
+    // framing decode() starts with (a transport that holds whole frames for
+    // the clock asks this, so the request is still decoded once).
+    FrameScan frame(std::span<const std::uint8_t> input, DataCodePolicy policy) const;
     // Decodes the frame at the start of `input` (at most one); touches no memory.
     // `own`: the port's network/station numbers, served like 00/FF.
     Request decode(std::span<const std::uint8_t> input, DataCodePolicy policy, StationNumbers own = {}) const;

@@ -1,6 +1,8 @@
-// One TCP connection: frames are cut from the stream by their length field, so
-// a request split over many segments is assembled and several requests in one
-// segment are all answered, in order. A watchdog closes silent connections
+// One TCP connection: it reads bytes into its inbox, which cuts frames from
+// the stream by their length field and has the station serve them when its
+// timing mode says (station/inbox.hpp), and writes the answers. A request
+// split over many segments is assembled and several requests in one segment
+// are all answered, in order. A watchdog closes silent connections
 // (idle timeout) and connections whose started frame stays incomplete
 // (partial-frame timeout), so a half-sent header cannot hold a slot for long.
 //
@@ -24,13 +26,14 @@
 #include "config/config.hpp"
 #include "protocol/peer.hpp"
 #include "scenarios/faults.hpp"
+#include "server/socket_feed.hpp"
 #include "server/stream_session.hpp"
+#include "station/inbox.hpp"
 #include "station/station.hpp"
 
 namespace slmp::server {
 
 class Outbox;
-class TimedInput;
 
 class TcpSession final : public StreamSession, public std::enable_shared_from_this<TcpSession> {
 public:
@@ -50,29 +53,7 @@ public:
     station::PushTarget push_target();
 
 private:
-    // What serving the whole frames of one read left for serve() to do. One
-    // per connection, cleared for each read (the responses keep their capacity).
-    struct Served {
-        std::size_t consumed = 0;   // bytes of the input they took
-        std::vector<std::pair<std::vector<std::uint8_t>, scenarios::Delivery>> responses;   // not yet in the outbox
-        bool waiting = false;       // end_of_scan: the rest waits for the END
-        bool close = false;
-        bool restart = false;       // Remote RESET: the CPU restarts once the answers are out
-        bool reset = false;         // a scenario's "reset": RST instead of FIN
-        std::string close_reason;
-        boost::system::error_code ec;   // a write failed while model timing waited
-
-        void clear() {
-            responses.clear();
-            *this = {0, std::move(responses)};
-        }
-        void queue_responses(Outbox& outbox);   // into the outbox, in order; none are left here
-    };
     station::StrandTask<> serve();
-    void begin_frames();
-    bool serve_frame(std::span<const std::uint8_t> input, const station::Service* service, Served& served);
-    station::StrandTask<> serve_timed_frames(TimedInput& timed, Served& served,
-                                             std::chrono::steady_clock::time_point served_at, bool at_end);
     void close_now();
     station::StrandTask<> watch_deadlines();
     void note_pending(std::size_t pending_bytes, bool consumed_a_frame);
@@ -100,13 +81,10 @@ private:
     Outbox* outbox_ = nullptr;            // serve()'s, while it runs
     bool push_pending_ = false;                 // a push cancelled the read; send it
     bool sending_ = false;                      // serve() is writing (the watchdog waits meanwhile)
-    // On the station's strand: the last request's shape, for pushes.
-    protocol::FrameKind last_kind_ = protocol::FrameKind::E3;
-    protocol::Codec last_codec_ = protocol::Codec::Binary;
+    SocketFeed feed_{socket_};   // the inbox's further bytes while it waits on the clock
+    station::Inbox inbox_;       // received bytes and how they are served (station/inbox.hpp)
 };
 
 protocol::DataCodePolicy to_policy(config::DataCode code);
-// The frame shape (3E/4E, binary/ASCII) a request frame starts with; 3E binary when unknown.
-std::pair<protocol::FrameKind, protocol::Codec> request_shape(std::span<const std::uint8_t> frame);
 
 }  // namespace slmp::server

@@ -5,7 +5,6 @@
 #include "server/tcp_session.hpp"
 #include "server/udp_delivery.hpp"
 #include "station/log_exception.hpp"
-#include "station/scan_loop.hpp"
 
 namespace slmp::server {
 
@@ -33,8 +32,7 @@ UdpListener::UdpListener(const station::Home& home, station::Station& station, c
 station::StrandTask<> UdpListener::serve() {
     std::array<std::uint8_t, 65536> datagram;
     udp::endpoint sender;
-    auto* scan = station_.scan_loop();
-    const auto mode = scan ? station_.timing_mode() : config::TimingMode::Instant;
+    const bool at_once = station_.serves_at_once();
     int turn = 0;   // datagrams served since the last asynchronous receive
     while (socket_.is_open()) {
         boost::system::error_code ec;
@@ -54,42 +52,23 @@ station::StrandTask<> UdpListener::serve() {
             continue;
         }
         auto input = std::span<const std::uint8_t>(datagram.data(), n);
-        if (mode == config::TimingMode::Instant) {
-            if (auto later = answer_now(input, sender, nullptr)) co_await send_later(sender, std::move(*later));
+        if (at_once) {
+            const auto peer = peer_of(sender);
+            if (auto later = answer_now(input, sender, peer, station_.handle(input, policy_, session_, peer)))
+                co_await send_later(sender, std::move(*later));
             continue;
         }
-        // Each datagram waits on the clock by itself, from its arrival
-        // (the jitter is drawn in arrival order).
-        const auto arrival = scan->clock().now();
-        std::optional<station::Service> model;
-        if (mode == config::TimingMode::Model) model = station_.model_service(input, policy_, session_, arrival);
-        asio::co_spawn(socket_.get_executor(),
-                       serve_later(std::vector<std::uint8_t>(input.begin(), input.end()), sender, arrival, model),
+        // Each datagram waits on the clock by itself, from its arrival.
+        asio::co_spawn(socket_.get_executor(), serve_later(station::HeldDatagram(station_, input, policy_, session_), sender),
                        station::log_exception("UDP port " + std::to_string(port_) + ": a held datagram failed"));
     }
 }
 
-station::StrandTask<> UdpListener::serve_later(std::vector<std::uint8_t> datagram, udp::endpoint sender,
-                                               std::chrono::steady_clock::time_point arrival,
-                                               std::optional<station::Service> model) {
-    auto& scan = *station_.scan_loop();
-    std::optional<station::Service> service = model;
-    if (model) {
-        while (scan.clock().now() < model->at && !scan.stopped()) co_await scan.until_end_or(std::nullopt, model->at);
-    } else if (const auto queued = station_.next_request(datagram, policy_, session_);
-               station_.timing_mode() == config::TimingMode::EndOfScan && queued && queued->start == 0) {
-        // end_of_scan: the END after the arrival, or the monitoring timer first.
-        const auto seen = scan.scans();
-        std::optional<std::chrono::steady_clock::time_point> deadline;
-        if (queued->timer.count() > 0) deadline = arrival + queued->timer;
-        while (scan.scans() <= seen && !scan.stopped() && !(deadline && scan.clock().now() >= *deadline))
-            co_await scan.until_end_or(seen, deadline);
-        const bool at_end = scan.scans() > seen;
-        service = station::Station::end_of_scan_service(arrival, queued->timer,
-                                                        at_end ? scan.end_time(seen + 1) : scan.clock().now(), at_end);
-    }
-    if (scan.stopped() || !socket_.is_open()) co_return;
-    if (auto later = answer_now(datagram, sender, service ? &*service : nullptr)) co_await send_later(sender, std::move(*later));
+station::StrandTask<> UdpListener::serve_later(station::HeldDatagram datagram, udp::endpoint sender) {
+    if (!co_await datagram.wait() || !socket_.is_open()) co_return;
+    const auto peer = peer_of(sender);
+    if (auto later = answer_now(datagram.bytes(), sender, peer, datagram.serve(session_, peer)))
+        co_await send_later(sender, std::move(*later));
 }
 
 protocol::Peer UdpListener::peer_of(const udp::endpoint& sender) const {
@@ -97,10 +76,8 @@ protocol::Peer UdpListener::peer_of(const udp::endpoint& sender) const {
 }
 
 std::optional<station::Handled> UdpListener::answer_now(std::span<const std::uint8_t> input, const udp::endpoint& sender,
-                                                        const station::Service* service) {
-    const auto peer = peer_of(sender);
+                                                        const protocol::Peer& peer, station::Handled handled) {
     const auto n = input.size();
-    auto handled = station_.handle(input, policy_, session_, peer, service);
     auto& outcome = handled.outcome;
     if (outcome.action == Outcome::Action::NeedMore) {
         station_.log().debug("{} datagram of {} byte(s) holds no whole request frame (check the request data length); "
@@ -112,8 +89,7 @@ std::optional<station::Handled> UdpListener::answer_now(std::span<const std::uin
     // Remember who spoke, for Ondemand pushes; bounded, so a flood of
     // source ports cannot grow it without end (later peers are not pushed to).
     if (outcome.command != 0 && (peers_.size() < kMaxPushPeers || peers_.count(sender))) {
-        auto [kind, codec] = request_shape(input);
-        peers_[sender] = {kind, codec};
+        peers_[sender] = station::request_shape(input);
     }
     if (outcome.action == Outcome::Action::Restart) station_.restart();
     if (outcome.action != Outcome::Action::Respond) return std::nullopt;

@@ -10,6 +10,7 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
+#include "station/inbox.hpp"
 #include "station/station.hpp"
 
 namespace slmp::server {
@@ -31,13 +32,12 @@ private:
     station::StrandTask<> serve();
     // end_of_scan and model (docs/timing.md): one datagram, held on the
     // virtual clock until it is served, while the port receives the next.
-    station::StrandTask<> serve_later(std::vector<std::uint8_t> datagram, boost::asio::ip::udp::endpoint sender,
-                                      std::chrono::steady_clock::time_point arrival,
-                                      std::optional<station::Service> model);
-    // Serves one datagram and sends its answer when it can at once (no
-    // scenario delay or split, room in the send buffer); else returns it.
+    station::StrandTask<> serve_later(station::HeldDatagram datagram, boost::asio::ip::udp::endpoint sender);
+    // The station's answer to one datagram, sent at once when it can be (no
+    // scenario delay or split, room in the send buffer); else returned.
     std::optional<station::Handled> answer_now(std::span<const std::uint8_t> datagram,
-                                               const boost::asio::ip::udp::endpoint& sender, const station::Service* service);
+                                               const boost::asio::ip::udp::endpoint& sender, const protocol::Peer& peer,
+                                               station::Handled handled);
     // The answer answer_now() returned, sent as its delivery asks.
     station::StrandTask<> send_later(boost::asio::ip::udp::endpoint sender, station::Handled handled);
     protocol::Peer peer_of(const boost::asio::ip::udp::endpoint& sender) const;
@@ -48,11 +48,7 @@ private:
     protocol::Session session_;
     station::StrandDatagramSocket socket_;
     std::uint16_t port_ = 0;
-    struct SeenPeer {
-        protocol::FrameKind kind;
-        protocol::Codec codec;
-    };
-    std::map<boost::asio::ip::udp::endpoint, SeenPeer> peers_;   // who an Ondemand push goes to
+    std::map<boost::asio::ip::udp::endpoint, station::RequestShape> peers_;   // who an Ondemand push goes to
 };
 
 }  // namespace slmp::server

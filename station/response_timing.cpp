@@ -43,8 +43,7 @@ std::chrono::microseconds ResponseTiming::modelled(const protocol::Request& requ
     return time;
 }
 
-std::chrono::milliseconds ResponseTiming::monitoring_timer(const protocol::Request& request, std::span<const std::uint8_t> input) {
-    const auto& h = request.header;
+std::chrono::milliseconds ResponseTiming::monitoring_timer(const protocol::FrameHeader& h, std::span<const std::uint8_t> input) {
     if (input.size() < h.header_size) return std::chrono::milliseconds{0};
     // 3E/4E/station-extended: the timer is the first field the length counts
     // (decode.cpp reads it the same way); 1E: the header's last field, after

@@ -28,7 +28,11 @@ public:
     static std::uint64_t words(const protocol::Request& request);
     // The request's monitoring timer in time (units of 250 ms, §3.1.8; 1E
     // too); zero for 0 ("wait forever") and for a timer that does not decode.
-    static std::chrono::milliseconds monitoring_timer(const protocol::Request& request, std::span<const std::uint8_t> input);
+    static std::chrono::milliseconds monitoring_timer(const protocol::Request& request, std::span<const std::uint8_t> input) {
+        return monitoring_timer(request.header, input);
+    }
+    // The same from the frame's header alone (a request framed, not decoded yet).
+    static std::chrono::milliseconds monitoring_timer(const protocol::FrameHeader& header, std::span<const std::uint8_t> input);
 
 private:
     double next_unit();   // [0, 1), the same sequence for the same seed on every platform

@@ -105,11 +105,20 @@ protocol::Session Station::new_session(const config::PortConfig& port) {
 
 Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
                         const protocol::Peer& peer, const Service* service) {
+    return serve(engine_.decode(input, policy, session.own), input, session, peer, service);
+}
+
+Handled Station::handle(Ticket& ticket, protocol::Session& session, const protocol::Peer& peer) {
+    return serve(std::move(ticket.request), ticket.bytes, session, peer, ticket.service ? &*ticket.service : nullptr);
+}
+
+Handled Station::serve(protocol::Request request, std::span<const std::uint8_t> input, protocol::Session& session,
+                       const protocol::Peer& peer, const Service* service) {
     activity_.request_starting();
     session.file_owner = protocol::lock_owner(peer, session.id);   // UDP: each peer its own (docs/files.md)
     auto started = std::chrono::steady_clock::now();
-    // Decode once; the scenario hook sits between decode and execute.
-    scenarios::Incoming incoming{engine_.decode(input, policy, session.own)};
+    // Decoded once (handle() or schedule()); the scenario hook sits between decode and execute.
+    scenarios::Incoming incoming{std::move(request)};
     auto plan = scenario_.before(incoming, input, session, peer);
     Handled handled;
     std::optional<std::chrono::microseconds> modelled;

@@ -37,20 +37,36 @@ class ScanLoop;
 class ScenarioStation;
 struct StationSnapshot;
 
-// When and how a transport has a request served in the end_of_scan and
-// model timing modes (docs/timing.md): it waits until `at` (CPU time), then
-// hands the request to Station::handle() with this.
+// When a request held for the clock (the end_of_scan and model timing
+// modes, docs/timing.md) is served: the station decides (station/inbox.hpp
+// holds the request meanwhile), then serves it with this.
 struct Service {
     std::chrono::steady_clock::time_point at;            // CPU time
     bool timed_out = false;                              // the monitoring timer ran out first: CF71, not executed
     std::optional<std::chrono::microseconds> modelled;   // model mode: the modelled time (metrics)
 };
 
-// The first whole request a transport holds (Station::next_request).
+// The first whole request held bytes start with (Station::next_request).
 struct Queued {
     std::size_t start = 0;                // bytes the port skips before it (0: it starts the input)
     std::size_t end = 0;                  // bytes from the start of the input to its end
     std::chrono::milliseconds timer{0};   // its monitoring timer (0: none or waits forever)
+    bool too_large = false;               // its length field is past the maximum: refused at once, not held
+};
+
+// model: one request taken out of the transport's bytes, decoded once, with
+// the time the model gives it (Station::schedule). Move-only: `request`
+// points into `bytes`, whose buffer moves with it.
+struct Ticket {
+    std::vector<std::uint8_t> bytes;
+    protocol::Request request;
+    std::optional<Service> service;   // nullopt: served at once (no command to model)
+
+    Ticket() = default;
+    Ticket(Ticket&&) = default;
+    Ticket& operator=(Ticket&&) = default;
+    Ticket(const Ticket&) = delete;
+    Ticket& operator=(const Ticket&) = delete;
 };
 
 class Station {
@@ -79,23 +95,26 @@ public:
 
     // One request frame from any transport: the scenario hook and the engine
     // handle it, it is logged and reported to the activity observers (not when
-    // the input holds no whole frame yet: NeedMore).
-    // `service`: end_of_scan and model, when the transport waited for it
-    // (model_service(), end_of_scan_service()); a timed-out request is
-    // answered CF71 (1E: 60) and not executed.
+    // the input holds no whole frame yet: NeedMore). The transports serve
+    // through station/inbox.hpp, which calls these when the timing mode says.
+    // `service`: end_of_scan, the END (or monitoring timer) that serves it; a
+    // timed-out request is answered CF71 (1E: 60) and not executed.
     Handled handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
                    const protocol::Peer& peer, const Service* service = nullptr);
-    // end_of_scan and model (station_timing.cpp): the first whole request in
-    // `input`, after bytes the port would skip; nullopt while none is whole.
-    std::optional<Queued> next_request(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy,
-                                       const protocol::Session& session) const;
-    // model: when the request at the start of `input`, which arrived at
-    // `arrival` (CPU time), is executed and answered — arrival + the modelled
+    // model: a request schedule() decoded, at its time.
+    Handled handle(Ticket& ticket, protocol::Session& session, const protocol::Peer& peer);
+    // The first whole request in `input`, after bytes the port would skip;
+    // nullopt while none is whole. Frames, does not decode (station_timing.cpp).
+    std::optional<Queued> next_request(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy) const;
+    // model: the whole request `frame`, which arrived at `arrival` (CPU time),
+    // decoded, and when it is executed and answered — arrival + the modelled
     // time, or + its monitoring timer when that runs out first. Draws the
-    // next jitter value. nullopt: not model mode, or no whole request.
-    std::optional<Service> model_service(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy,
-                                         const protocol::Session& session,
-                                         std::chrono::steady_clock::time_point arrival);
+    // next jitter value, so call it in arrival order.
+    Ticket schedule(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy, const protocol::Session& session,
+                    std::chrono::steady_clock::time_point arrival);
+    // Whether a request is served as soon as it is whole (instant timing):
+    // then a transport may serve on its own strand and skip the clock.
+    bool serves_at_once() const { return !scan_ || timing_mode_ == config::TimingMode::Instant; }
     // end_of_scan: how a request that arrived at `arrival` with `timer` is
     // served at CPU time `now`, `at_end` telling whether `now` is the END that
     // serves it; nullopt: not yet (it waits for that END).
@@ -139,9 +158,8 @@ public:
     // The scan cycle and its virtual clock (station/scan_loop.hpp); null in a bare station.
     ScanLoop* scan_loop() { return scan_.get(); }
     // When requests are served (docs/timing.md). Instant in a bare station.
-    // With end_of_scan the transports wait for the END after a request's
-    // arrival (or its monitoring timer) before they hand it over, so it
-    // executes at END; with model, they wait for model_service().
+    // With end_of_scan a request waits for the END after its arrival (or its
+    // monitoring timer), so it executes at END; with model, for schedule()'s time.
     config::TimingMode timing_mode() const { return timing_mode_; }
     const config::TimingModel& timing_model() const { return timing_model_; }
 
@@ -178,6 +196,9 @@ private:
     std::vector<devicemodel::Cpu*> all_cpus();
     // The monitoring timer's answer: CF71 (1E: 60), nothing executed.
     static protocol::Outcome timed_out(const protocol::Request& request, std::chrono::milliseconds timer);
+    // handle()'s body, for a request decoded from `input` (once).
+    Handled serve(protocol::Request request, std::span<const std::uint8_t> input, protocol::Session& session,
+                  const protocol::Peer& peer, const Service* service);
 
     config::ServerConfig config_;   // with the scenarios' initial state joined
     std::shared_ptr<spdlog::logger> log_ = process_logger();

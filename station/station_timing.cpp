@@ -1,6 +1,7 @@
 // When the end_of_scan and model timing modes serve a request
-// (docs/timing.md). The transports hold the bytes; these say when to hand
-// them to Station::handle() and whether the monitoring timer ran out first.
+// (docs/timing.md). The inbox (station/inbox.hpp) holds the bytes; these say
+// when to hand them to Station::handle() and whether the monitoring timer ran
+// out first.
 #include "station/station.hpp"
 
 #include <algorithm>
@@ -14,28 +15,29 @@ namespace slmp::station {
 using std::chrono::microseconds;
 using protocol::Outcome;
 
-std::optional<Queued> Station::next_request(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy,
-                                            const protocol::Session& session) const {
+std::optional<Queued> Station::next_request(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy) const {
     std::size_t offset = 0;
     while (offset < input.size()) {
-        const auto request = engine_.decode(input.subspan(offset), policy, session.own);
-        switch (request.frame) {
-            case protocol::Request::Frame::NeedMore: return std::nullopt;
-            case protocol::Request::Frame::Garbage: offset += std::max<std::size_t>(request.size, 1); continue;
-            case protocol::Request::Frame::TooLarge: return Queued{offset, offset + 1, {}};   // refused at once, no wait
-            case protocol::Request::Frame::Complete: break;
+        const auto rest = input.subspan(offset);
+        const auto scan = engine_.frame(rest, policy);
+        switch (scan.status) {
+            case protocol::FrameScan::Status::NeedMore: return std::nullopt;
+            case protocol::FrameScan::Status::Garbage: offset += std::max<std::size_t>(scan.size, 1); continue;
+            case protocol::FrameScan::Status::TooLarge: return Queued{offset, offset + 1, {}, true};
+            case protocol::FrameScan::Status::Complete: break;
         }
-        return Queued{offset, offset + request.size, ResponseTiming::monitoring_timer(request, input.subspan(offset))};
+        return Queued{offset, offset + scan.size, ResponseTiming::monitoring_timer(scan.header, rest), false};
     }
     return std::nullopt;
 }
 
-std::optional<Service> Station::model_service(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy,
-                                              const protocol::Session& session,
-                                              std::chrono::steady_clock::time_point arrival) {
-    if (!timing_ || !scan_) return std::nullopt;
-    const auto request = engine_.decode(input, policy, session.own);
-    if (!request.complete() || !request.has_command) return std::nullopt;
+Ticket Station::schedule(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy, const protocol::Session& session,
+                         std::chrono::steady_clock::time_point arrival) {
+    Ticket ticket;
+    ticket.bytes = std::move(frame);
+    ticket.request = engine_.decode(ticket.bytes, policy, session.own);
+    const auto& request = ticket.request;
+    if (!timing_ || !scan_ || !request.complete() || !request.has_command) return ticket;
     const auto& clock = scan_->clock();
     // The next END after the arrival in CPU time: a running clock's scan covers period × speed of it.
     const auto cpu_period = clock.frozen() ? std::chrono::duration_cast<microseconds>(scan_->period())
@@ -43,10 +45,11 @@ std::optional<Service> Station::model_service(std::span<const std::uint8_t> inpu
     const auto next_end = scan_->last_end() + cpu_period;
     const auto scan_wait = next_end > arrival ? std::chrono::duration_cast<microseconds>(next_end - arrival) : microseconds{0};
     const auto modelled = timing_->modelled(request, scan_wait);
-    const auto timer = ResponseTiming::monitoring_timer(request, input);
+    const auto timer = ResponseTiming::monitoring_timer(request, ticket.bytes);
     // The port gives up when the timer runs out first (docs/timing.md).
-    if (timer.count() > 0 && modelled > timer) return Service{arrival + timer, true, timer};
-    return Service{arrival + modelled, false, modelled};
+    if (timer.count() > 0 && modelled > timer) ticket.service = Service{arrival + timer, true, timer};
+    else ticket.service = Service{arrival + modelled, false, modelled};
+    return ticket;
 }
 
 std::optional<Service> Station::end_of_scan_service(std::chrono::steady_clock::time_point arrival,

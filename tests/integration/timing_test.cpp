@@ -136,6 +136,24 @@ TEST_CASE("model, frozen clock: the answer leaves once Ke + Kdt x words of CPU t
     }
 }
 
+TEST_CASE("model: pipelined requests are answered in order, each at its own time; an earlier answer does not wait for a later one", "[timing]") {
+    auto sim = frozen_sim(R"({"mode": "model", "ke_ms": 10, "kdt_ms": 1, "scan_wait": false})");
+    const auto port = sim.http_port();
+    REQUIRE(http_put(port, "/api/devices/D0", R"({"values": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]})").status == 200);
+    auto c = TcpClient::open(sim.tcp_port());
+    // One segment: a 1-word read (10 + 1 = 11 ms), then a 10-word read (10 + 10 = 20 ms from the same arrival).
+    REQUIRE(c.send(concat({client::read_words(kBin.options(), addr("D0"), 1), client::read_words(kBin.options(), addr("D0"), 10)})));
+    await_waiting(port, 1);
+    step(port, R"({"ms": 11})");
+    CHECK(show(response_of(c)) == show(expected_response(kBin, word_data(kBin, {1}))));
+    await_waiting(port, 1);   // the second waits on the clock; its answer has not left
+    CHECK(nothing_received(c));
+    step(port, R"({"ms": 8})");
+    CHECK(nothing_received(c));
+    step(port, R"({"ms": 1})");
+    CHECK(show(response_of(c)) == show(expected_response(kBin, word_data(kBin, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10}))));
+}
+
 TEST_CASE("model: the monitoring timer runs out first: CF71 at the timer's time, nothing written", "[timing]") {
     auto sim = frozen_sim(R"({"mode": "model", "ke_ms": 600, "scan_wait": false})");
     const auto port = sim.http_port();
