@@ -9,6 +9,7 @@
 #include "config/drive_config.hpp"
 #include "config/json_path.hpp"
 #include "config/settings.hpp"
+#include "frontends/face.hpp"
 
 namespace slmp::config {
 
@@ -131,7 +132,10 @@ DataCode parse_data_code(const std::string& text, const std::string& where) {
 }
 
 ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path& directory) {
-    check_keys(root, Section::Station, {"kind", "hostlink", "jw51cm"});   // the extras: parse_frontends_config
+    // The extras: "kind" and the faces' sections (parse_frontends_config).
+    std::vector<std::string_view> extra{"kind"};
+    for (const auto* face : frontends::faces()) extra.push_back(face->name());
+    check_keys(root, Section::Station, extra);
     ServerConfig c;
     if (root.has("name")) c.name = checked_station_name(root["name"]);
     if (root.has("profile")) c.profile = root["profile"].string();

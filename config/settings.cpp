@@ -1,6 +1,8 @@
 // The settings table (config/settings.hpp) and what is generated from it.
 #include "config/settings.hpp"
 
+#include "frontends/face.hpp"
+
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -10,6 +12,7 @@
 
 #include "config/config_error.hpp"
 #include "config/json_path.hpp"
+#include "frontends/face.hpp"
 
 namespace slmp::config {
 
@@ -449,7 +452,7 @@ std::string key_path(const Setting& row) {
 
 nlohmann::json schema_of(const Setting& row);
 
-nlohmann::json object_schema(Section section, std::initializer_list<std::string_view> extra = {}) {
+nlohmann::json object_schema(Section section, std::span<const std::string_view> extra = {}) {
     nlohmann::json properties = nlohmann::json::object();
     nlohmann::json required = nlohmann::json::array();
     for (const auto& row : kSettings) {
@@ -557,7 +560,7 @@ bool is_choice(const Setting& row, std::string_view value) {
     return false;
 }
 
-void check_keys(const JsonAt& object, Section section, std::initializer_list<std::string_view> extra) {
+void check_keys(const JsonAt& object, Section section, std::span<const std::string_view> extra) {
     auto keys = section_keys(section);
     keys.insert(keys.end(), extra.begin(), extra.end());
     object.only_keys(std::span<const std::string_view>(keys));
@@ -612,7 +615,9 @@ std::string settings_markdown(std::string_view table) {
 }
 
 nlohmann::json settings_json_schema() {
-    auto station = object_schema(S::Station, {"kind", "hostlink", "jw51cm"});
+    std::vector<std::string_view> extra{"kind"};   // and the faces' sections (frontends/registry.cpp)
+    for (const auto* face : frontends::faces()) extra.push_back(face->name());
+    auto station = object_schema(S::Station, extra);
     auto plant = station;
     plant["properties"]["threads"] = schema_of(setting(S::Plant, "threads"));
     auto stations = schema_of(setting(S::Plant, "stations"));

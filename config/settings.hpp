@@ -87,7 +87,7 @@ std::string_view section_name(Section section);
 
 // The object must hold only its section's keys (and `extra`, keys read by
 // another part: the faces'); an unknown key fails naming itself and the list.
-void check_keys(const JsonAt& object, Section section, std::initializer_list<std::string_view> extra = {});
+void check_keys(const JsonAt& object, Section section, std::span<const std::string_view> extra = {});
 // Whether `value` is one of a Choice row's choices ("info" of log_level).
 bool is_choice(const Setting& row, std::string_view value);
 // A key's value checked against its row: a whole number (Integer) or a number

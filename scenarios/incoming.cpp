@@ -5,14 +5,7 @@
 
 namespace slmp::scenarios {
 
-std::string_view to_string(Protocol protocol) {
-    switch (protocol) {
-        case Protocol::Slmp: return "slmp";
-        case Protocol::HostLink: return "hostlink";
-        case Protocol::Jw51cm: return "jw51cm";
-    }
-    return "?";
-}
+std::string_view to_string(Protocol protocol) { return protocol; }
 namespace {
 
 // The devices an operand covers: its points in bits, or in words (a double

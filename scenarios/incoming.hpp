@@ -18,10 +18,10 @@ struct Incoming {
     protocol::Peer peer;              // address empty in tests that do not care
     std::uint64_t connection = 0;     // n-th TCP connection since start (0 for UDP)
     // A front end's request has no decoded `request`: its protocol and command text instead.
-    Protocol request_protocol = Protocol::Slmp;
+    Protocol request_protocol = kSlmp;
     std::string command_text;         // "RD", "24" (JW COM in uppercase hex)
 
-    bool frontend() const { return request_protocol != Protocol::Slmp; }
+    bool frontend() const { return request_protocol != kSlmp; }
     Access access() const {
         return request.writes_devices() ? Access::Write : request.reads_devices() ? Access::Read : Access::Any;
     }

@@ -3,27 +3,18 @@
 #include <initializer_list>
 #include <string_view>
 
+#include "frontends/face.hpp"
 #include "scenarios/load_parts.hpp"
 
 namespace slmp::scenarios::load {
 namespace {
 
-// A host-link command is two letters, case counts ("Rr" is not "RR");
-// a JW-51CM COM is two hex digits, compared in uppercase.
+// A face's command in its own form (frontends/face.hpp: Face::scenario_command).
 std::string frontend_command(const JsonAt& at, Protocol protocol) {
     auto text = at.string();
-    bool ok = text.size() == 2;
-    for (auto& c : text) {
-        if (protocol == Protocol::Jw51cm) {
-            ok = ok && std::isxdigit(static_cast<unsigned char>(c));
-            c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-        } else {
-            ok = ok && std::isgraph(static_cast<unsigned char>(c));
-        }
-    }
-    if (!ok)
-        at.fail("'" + at.string() + "' is not a " + std::string(to_string(protocol)) + " command",
-                protocol == Protocol::Jw51cm ? "write the COM as two hex digits, e.g. \"24\"" : "write the two-letter command, e.g. \"RD\"");
+    const auto& face = *frontends::find_face(protocol);
+    if (!face.scenario_command(text))
+        at.fail("'" + at.string() + "' is not a " + std::string(to_string(protocol)) + " command", face.command_fix());
     return text;
 }
 
@@ -31,12 +22,11 @@ FaultMatch match(const JsonAt& at) {
     FaultMatch m;
     if (at.has("protocol")) {
         auto p = at["protocol"].string();
-        if (p == "slmp") m.request_protocol = Protocol::Slmp;
-        else if (p == "hostlink") m.request_protocol = Protocol::HostLink;
-        else if (p == "jw51cm") m.request_protocol = Protocol::Jw51cm;
-        else at["protocol"].fail("unknown protocol '" + p + "'", "use \"slmp\", \"hostlink\" or \"jw51cm\"");
+        if (p == kSlmp) m.request_protocol = kSlmp;
+        else if (const auto* face = frontends::find_face(p)) m.request_protocol = face->name();
+        else at["protocol"].fail("unknown protocol '" + p + "'", "use " + frontends::face_names(kSlmp));
     }
-    if (m.request_protocol != Protocol::Slmp) {
+    if (m.request_protocol != kSlmp) {
         // A front end's request has a command and a peer; nothing SLMP decodes.
         at.only_keys({"protocol", "command", "transport", "connection", "client"});
         if (at.has("command")) {
@@ -49,7 +39,7 @@ FaultMatch match(const JsonAt& at) {
     } else {
         at.only_keys({"protocol", "command", "subcommand", "devices", "access", "frame", "code", "transport", "connection", "client"});
     }
-    if (at.has("command") && m.request_protocol == Protocol::Slmp) m.commands = codes(at["command"]);
+    if (at.has("command") && m.request_protocol == kSlmp) m.commands = codes(at["command"]);
     if (at.has("subcommand")) m.subcommands = codes(at["subcommand"]);
     if (at.has("devices")) m.devices = ranges(at["devices"]);
     if (at.has("access")) m.access = access(at["access"]);
@@ -132,7 +122,7 @@ bool frontend_kind(FaultKind kind) {
 // "end_code" on a front end: the host link's response code or the JW RSLT, two hex digits.
 std::uint8_t frontend_code(const JsonAt& at, Protocol protocol) {
     auto text = at.string();
-    auto fix = protocol == Protocol::Jw51cm ? "write the RSLT as two hex digits, e.g. \"10\"" : "write the response code as two hex digits, e.g. \"15\"";
+    auto fix = frontends::find_face(protocol)->code_fix();
     if (text.size() != 2 || !std::isxdigit(static_cast<unsigned char>(text[0])) || !std::isxdigit(static_cast<unsigned char>(text[1])))
         at.fail("'" + text + "' is not a " + std::string(to_string(protocol)) + " response code", fix);
     auto code = static_cast<std::uint8_t>(std::stoul(text, nullptr, 16));
@@ -143,12 +133,12 @@ std::uint8_t frontend_code(const JsonAt& at, Protocol protocol) {
 FaultAction action(const JsonAt& at, const KindInfo& k, Protocol request_protocol) {
     FaultAction a;
     a.kind = k.kind;
-    if (request_protocol != Protocol::Slmp && !frontend_kind(k.kind))
+    if (request_protocol != kSlmp && !frontend_kind(k.kind))
         at["do"].fail("a \"" + std::string(k.name) + "\" fault does not act on " + std::string(to_string(request_protocol)) + " requests",
                       "use end_code, delay, no_response, close or reset");
     switch (k.kind) {
         case FaultKind::EndCode:
-            if (request_protocol != Protocol::Slmp) {
+            if (request_protocol != kSlmp) {
                 a.frontend_code = frontend_code(at["end_code"], request_protocol);
                 break;
             }

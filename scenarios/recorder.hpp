@@ -35,7 +35,7 @@ public:
                           const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults,
                           const std::string& named) = 0;
     virtual void closed(TimePoint at, const RecordedLink& link, const std::string& why) = 0;
-    // A front end's exchange (`protocol` "hostlink", "jw51cm"; `command` "RD",
+    // A protocol face's exchange (`protocol` the face's name; `command` "RD",
     // "24"; `code` the response code or RSLT, empty with no answer). The
     // JSON-lines recording keeps it; the pcap capture does not.
     virtual void frontend_exchange(TimePoint /*at*/, const RecordedLink& /*link*/, std::string_view /*protocol*/,

@@ -101,10 +101,11 @@ struct Timeline {
 
 using config::Transport;
 enum class Access : std::uint8_t { Any, Read, Write };
-// Which protocol a request came in: SLMP (the engine) or a front end on the
-// same memory (frontends/hostlink, frontends/jw51cm).
-enum class Protocol : std::uint8_t { Slmp, HostLink, Jw51cm };
-std::string_view to_string(Protocol protocol);   // "slmp", "hostlink", "jw51cm"
+// Which protocol a request came in: SLMP (the engine) or a protocol face on the
+// same memory, by the face's name (frontends/face.hpp; static storage).
+using Protocol = std::string_view;
+inline constexpr Protocol kSlmp = "slmp";
+std::string_view to_string(Protocol protocol);   // "slmp", or the face's name
 
 
 struct FaultMatch {
@@ -119,7 +120,7 @@ struct FaultMatch {
     std::optional<std::string> client;            // the client's IP address
     // A fault matches one protocol's requests (SLMP unless "protocol" says
     // otherwise); a front end's commands by their text ("RD", "24").
-    Protocol request_protocol = Protocol::Slmp;
+    Protocol request_protocol = kSlmp;
     std::vector<std::string> frontend_commands;   // empty: any
 };
 

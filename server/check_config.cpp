@@ -1,7 +1,6 @@
 #include "server/check_config.hpp"
 
-#include "frontends/hostlink/host_link.hpp"
-#include "frontends/jw51cm/computer_link.hpp"
+#include "frontends/face.hpp"
 
 #include "station/asio.hpp"
 #include "station/station.hpp"
@@ -32,13 +31,8 @@ static void check_station(const config::StationConfig& station_config) {
     station::Station station(boost::asio::make_strand(io), checked);
     station.connect(transports);
     station.take_initial_snapshot();   // reads --snapshot's file
-    if (frontends.hostlink.enabled)
-        if (auto problem = frontends.hostlink.options->map.check(station.cpu().memory()); !problem.empty())
-            throw config::ConfigError(problem);
-    if (frontends.jw51cm.enabled) {
-        jw51cm::ComputerLink link(station.cpu(), *frontends.jw51cm.options);
-        if (auto problem = link.map().check(station.cpu().memory()); !problem.empty()) throw config::ConfigError(problem);
-    }
+    for (const auto& face : frontends.faces)
+        if (auto problem = face.face->check(station.cpu(), face); !problem.empty()) throw config::ConfigError(problem);
 }
 
 void check_configuration(const config::StationConfig& station_config) {

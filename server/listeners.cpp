@@ -1,8 +1,5 @@
 #include "server/listeners.hpp"
 
-#include "devicemodel/hex.hpp"
-#include "frontends/hostlink/command_table.hpp"
-#include "frontends/jw51cm/command_table.hpp"
 #include "server/frontend_session.hpp"
 #include "station/frontend_call.hpp"
 
@@ -24,149 +21,106 @@ Listeners::Listeners(const station::Home& home, station::Station& station, const
                                       "-port) or stop the program using it");
         }
     }
-    if (frontends.hostlink.enabled) listen_hostlink(home, station, config, frontends.hostlink, bind);
-    if (frontends.jw51cm.enabled) listen_jw51cm(home, station, config, frontends.jw51cm, bind);
-    if (hostlink_ || jw51cm_) {
+    for (const auto& face : frontends.faces) listen_face(home, station, config, face, bind);
+    if (!faces_.empty()) {
         station_ = &station;
-        station.attach_frontends({hostlink_.get(), jw51cm_.get()});
+        station::Station::FrontEnds units;
+        for (const auto& f : faces_) units.push_back(f.unit.get());
+        station.attach_frontends(std::move(units));
     }
 }
 
 namespace {
 
-std::string as_text(std::span<const std::uint8_t> bytes) { return std::string(bytes.begin(), bytes.end()); }
-
-std::span<const std::uint8_t> as_bytes(const std::string& text) {
-    return {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()};
-}
-
-FrontEndStep step(std::size_t consumed, std::string response, const station::FrontEndCall::Delivery& delivery) {
-    FrontEndStep s{false, consumed, std::move(response)};
+FrontEndStep step(frontends::Exchange& exchange, const station::FrontEndCall::Delivery& delivery) {
+    FrontEndStep s{false, exchange.consumed, std::move(exchange.response)};
     s.delay = delivery.delay;
     s.close = delivery.close;
     s.reset = delivery.reset;
     return s;
 }
 
-// One host-link record cut from `pending`, answered and reported (station/frontend_call.hpp).
-FrontEndStep hostlink_step(station::Station& station, hostlink::HostLink& link, hostlink::LinkState& state,
-                           std::span<const std::uint8_t> pending, std::uint64_t connection, const protocol::Peer& peer) {
-    station::FrontEndCall call(station, scenarios::Protocol::HostLink, connection, peer);
-    auto result = link.handle(pending, state, call.gate());
-    if (result.kind == hostlink::Cut::Kind::NeedMore) return FrontEndStep{true};
-    const auto* row = result.command.empty() ? nullptr : hostlink::find_command(result.command);
-    auto delivery = call.finish(pending.first(result.consumed), result.command, row != nullptr,
-                                row ? row->function : std::string_view(), result.code, as_bytes(result.response));
-    return step(result.consumed, std::move(result.response), delivery);
-}
-
-// A JW-51CM result reported: the COM (when the request reached it) and the RSLT answered.
-station::FrontEndCall::Delivery jw51cm_report(station::FrontEndCall& call, std::span<const std::uint8_t> request,
-                                              const jw51cm::ComputerLink::Result& result) {
-    constexpr std::size_t kCom = jw51cm::kHeaderBytes + 2;
-    const bool has_com = request.size() > kCom;
-    const auto* row = has_com ? jw51cm::find_command(result.command) : nullptr;
-    auto code = result.response.size() > kCom + 1 ? devicemodel::hex2(result.response[kCom + 1]) : std::string();
-    return call.finish(request, has_com ? devicemodel::hex2(result.command) : std::string(), row != nullptr,
-                       row ? row->name : std::string_view(), code, result.response);
+// One exchange reported (station/frontend_call.hpp): the command, whether the face knows it, the code answered.
+station::FrontEndCall::Delivery report(station::FrontEndCall& call, std::span<const std::uint8_t> request,
+                                       const frontends::Exchange& exchange) {
+    return call.finish(request, exchange.command, exchange.known, exchange.name, exchange.code,
+                       {reinterpret_cast<const std::uint8_t*>(exchange.response.data()), exchange.response.size()});
 }
 
 }  // namespace
 
-void Listeners::listen_hostlink(const station::Home& home, station::Station& station,
-                                const config::ServerConfig& config, const config::HostLinkConfig& hostlink,
-                                const boost::asio::ip::address& bind) {
-    if (auto problem = hostlink.options->map.check(station.cpu().memory()); !problem.empty())
-        throw config::ConfigError(problem);
-    hostlink_ = std::make_unique<hostlink::HostLink>(station.cpu(), *hostlink.options);
-    auto* link = hostlink_.get();
-
-    auto port = hostlink.port;
-    SessionFactory factory = [&station, link, port](station::StrandSocket socket,
-                                                    std::function<void(StreamSession*)> on_closed,
-                                                    std::function<std::size_t()>) -> std::shared_ptr<StreamSession> {
-        // The connection's own state (its QQMR list) lives in its handler.
-        auto state = std::make_shared<hostlink::LinkState>();
-        FrontEndHandler handler = [&station, link, state](std::span<const std::uint8_t> pending, std::uint64_t connection,
-                                                          const protocol::Peer& peer) {
-            return hostlink_step(station, *link, *state, pending, connection, peer);
-        };
-        return std::make_shared<FrontEndSession>(std::move(socket), station, "host link", std::move(handler), port,
-                                                 std::move(on_closed));
+void Listeners::listen_face(const station::Home& home, station::Station& station, const config::ServerConfig& config,
+                            const frontends::Settings& settings, const boost::asio::ip::address& bind) {
+    const auto& face = *settings.face;
+    if (auto problem = face.check(station.cpu(), settings); !problem.empty()) throw config::ConfigError(problem);
+    auto& served = faces_.emplace_back();
+    served.unit = face.make_unit(station.cpu(), settings);
+    auto* unit = served.unit.get();
+    auto fail = [&](config::Transport transport, std::uint16_t port, const boost::system::system_error& e) {
+        return config::ConfigError("cannot listen on the " + std::string(face.port_name()) + " " +
+                                   (transport == config::Transport::Tcp ? "TCP" : "UDP") + " port " + config.bind + ":" +
+                                   std::to_string(port) + ": " + e.code().message() + "; choose another port (" +
+                                   face.port_fix(transport) + ") or stop the program using it");
     };
-    try {
-        hostlink_tcp_ = std::make_unique<TcpListener>(home, station, port, bind, std::move(factory));
-    } catch (const boost::system::system_error& e) {
-        throw config::ConfigError("cannot listen on the host-link TCP port " + config.bind + ":" +
-                                  std::to_string(port.port) + ": " + e.code().message() +
-                                  "; choose another port (\"hostlink\": {\"tcp_port\": ...} or --hostlink-port) "
-                                  "or stop the program using it");
-    }
-    if (!hostlink.serial_path.empty()) serial_ = std::make_unique<SerialPort>(home, *hostlink_, hostlink.serial_path);
-}
-
-void Listeners::listen_jw51cm(const station::Home& home, station::Station& station, const config::ServerConfig& config,
-                              const config::Jw51cmConfig& jw, const boost::asio::ip::address& bind) {
-    jw51cm_ = std::make_unique<jw51cm::ComputerLink>(station.cpu(), *jw.options);
-    if (auto problem = jw51cm_->map().check(station.cpu().memory()); !problem.empty()) throw config::ConfigError(problem);
-    auto* link = jw51cm_.get();
-    auto fail = [&](const char* transport, std::uint16_t port, const boost::system::system_error& e) {
-        return config::ConfigError(std::string("cannot listen on the JW-51CM ") + transport + " port " + config.bind + ":" +
-                                   std::to_string(port) + ": " + e.code().message() + "; choose another port (\"jw51cm\": {\"" +
-                                   (transport[0] == 'T' ? "tcp" : "udp") + "_port\": ...}) or stop the program using it");
-    };
-    if (jw.tcp) {
-        auto port = *jw.tcp;
-        SessionFactory factory = [&station, link, port](station::StrandSocket socket,
+    if (settings.tcp) {
+        auto port = *settings.tcp;
+        SessionFactory factory = [&station, unit, port](station::StrandSocket socket,
                                                         std::function<void(StreamSession*)> on_closed,
                                                         std::function<std::size_t()>) -> std::shared_ptr<StreamSession> {
-            FrontEndHandler handler = [&station, link](std::span<const std::uint8_t> pending, std::uint64_t connection,
-                                                       const protocol::Peer& peer) {
-                station::FrontEndCall call(station, scenarios::Protocol::Jw51cm, connection, peer);
-                auto result = link->handle_stream(pending, call.gate());
-                if (result.kind == jw51cm::ComputerLink::Result::Kind::NeedMore) return FrontEndStep{true};
-                auto delivery = jw51cm_report(call, pending.first(result.consumed), result);
-                return step(result.consumed, as_text(result.response), delivery);
+            // The connection's own state (the host link's QQMR list) lives in its handler.
+            std::shared_ptr<frontends::SessionState> state = unit->new_session();
+            FrontEndHandler handler = [&station, unit, state](std::span<const std::uint8_t> pending, std::uint64_t connection,
+                                                              const protocol::Peer& peer) {
+                station::FrontEndCall call(station, unit->face().name(), connection, peer);
+                auto exchange = unit->stream(pending, state.get(), call.gate());
+                if (exchange.need_more) return FrontEndStep{true};
+                auto delivery = report(call, pending.first(exchange.consumed), exchange);
+                return step(exchange, delivery);
             };
-            return std::make_shared<FrontEndSession>(std::move(socket), station, "JW-51CM", std::move(handler), port,
-                                                     std::move(on_closed));
+            return std::make_shared<FrontEndSession>(std::move(socket), station, std::string(unit->face().log_name()),
+                                                     std::move(handler), port, std::move(on_closed));
         };
         try {
-            jw51cm_tcp_ = std::make_unique<TcpListener>(home, station, port, bind, std::move(factory));
+            served.tcp = std::make_unique<TcpListener>(home, station, port, bind, std::move(factory));
         } catch (const boost::system::system_error& e) {
-            throw fail("TCP", port.port, e);
+            throw fail(config::Transport::Tcp, port.port, e);
         }
     }
-    if (jw.udp) {
+    if (settings.udp) {
         // One session for the port, as an SLMP UDP port has: requests report it as their connection.
         auto session = station.next_session_id();
-        DatagramHandler handler = [&station, link, session](std::span<const std::uint8_t> datagram, const protocol::Peer& peer) {
-            station::FrontEndCall call(station, scenarios::Protocol::Jw51cm, session, peer);
-            auto result = link->handle_datagram(datagram, call.gate());
-            auto delivery = jw51cm_report(call, datagram, result);
-            return DatagramAnswer{as_text(result.response), delivery.delay};
+        DatagramHandler handler = [&station, unit, session](std::span<const std::uint8_t> datagram, const protocol::Peer& peer) {
+            station::FrontEndCall call(station, unit->face().name(), session, peer);
+            auto exchange = unit->datagram(datagram, call.gate());
+            auto delivery = report(call, datagram, exchange);
+            return DatagramAnswer{std::move(exchange.response), delivery.delay};
         };
         try {
-            jw51cm_udp_ = std::make_unique<FrontEndUdpListener>(home, "JW-51CM", jw.udp->port, bind, std::move(handler));
+            served.udp = std::make_unique<FrontEndUdpListener>(home, std::string(face.log_name()), settings.udp->port, bind,
+                                                               std::move(handler));
         } catch (const boost::system::system_error& e) {
-            throw fail("UDP", jw.udp->port, e);
+            throw fail(config::Transport::Udp, settings.udp->port, e);
         }
     }
+    if (!settings.serial_path.empty()) serial_ = std::make_unique<SerialPort>(home, *unit, settings.serial_path);
 }
 
-std::vector<std::uint16_t> Listeners::jw51cm_tcp_ports() const {
-    if (!jw51cm_tcp_) return {};
-    return {jw51cm_tcp_->port()};
+const Listeners::Served* Listeners::served(std::string_view face) const {
+    for (const auto& f : faces_)
+        if (f.unit->face().name() == face) return &f;
+    return nullptr;
 }
 
-std::vector<std::uint16_t> Listeners::jw51cm_udp_ports() const {
-    if (!jw51cm_udp_) return {};
-    return {jw51cm_udp_->port()};
+std::vector<std::uint16_t> Listeners::face_tcp_ports(std::string_view face) const {
+    const auto* f = served(face);
+    if (!f || !f->tcp) return {};
+    return {f->tcp->port()};
 }
 
-std::vector<std::uint16_t> Listeners::hostlink_ports() const {
-    if (!hostlink_tcp_) return {};
-    return {hostlink_tcp_->port()};
+std::vector<std::uint16_t> Listeners::face_udp_ports(std::string_view face) const {
+    const auto* f = served(face);
+    if (!f || !f->udp) return {};
+    return {f->udp->port()};
 }
 
 std::vector<std::uint16_t> Listeners::tcp_ports() const {
@@ -189,16 +143,17 @@ Listeners::~Listeners() {
 void Listeners::stop() {
     for (auto& l : tcp_) l->stop();
     for (auto& l : udp_) l->stop();
-    if (hostlink_tcp_) hostlink_tcp_->stop();
+    for (auto& f : faces_) {
+        if (f.tcp) f.tcp->stop();
+        if (f.udp) f.udp->stop();
+    }
     if (serial_) serial_->stop();
-    if (jw51cm_tcp_) jw51cm_tcp_->stop();
-    if (jw51cm_udp_) jw51cm_udp_->stop();
 }
 
 void Listeners::refuse_connections(bool refusing) {
     for (auto& l : tcp_) l->set_refusing(refusing);
-    if (hostlink_tcp_) hostlink_tcp_->set_refusing(refusing);
-    if (jw51cm_tcp_) jw51cm_tcp_->set_refusing(refusing);
+    for (auto& f : faces_)
+        if (f.tcp) f.tcp->set_refusing(refusing);
 }
 
 void Listeners::restart_sessions() {

@@ -1,6 +1,6 @@
 // The ports of one station: a TcpListener or UdpListener per configured SLMP
-// port, and the host-link port when the station serves Host Link (its
-// HostLink front end answers on the same CPU memory), bound at construction. They are the station's Transports, so a
+// port, and the ports of each protocol face it serves (frontends/face.hpp: a
+// face's unit answers on the same CPU memory), bound at construction. They are the station's Transports, so a
 // scenario's power cut closes the TCP ports and a restarted CPU gives UDP
 // clients fresh sessions.
 #pragma once
@@ -14,8 +14,7 @@
 
 #include "config/config.hpp"
 #include "config/frontend_config.hpp"
-#include "frontends/hostlink/host_link.hpp"
-#include "frontends/jw51cm/computer_link.hpp"
+#include "frontends/face.hpp"
 #include "server/frontend_udp_listener.hpp"
 #include "server/serial_port.hpp"
 #include "server/tcp_listener.hpp"
@@ -37,10 +36,10 @@ public:
 
     std::vector<std::uint16_t> tcp_ports() const;   // bound ports, also when 0 was asked for
     std::vector<std::uint16_t> udp_ports() const;
-    std::vector<std::uint16_t> hostlink_ports() const;   // empty when the station serves no Host Link
+    // A face's bound ports (empty when the station does not serve it, or it has no such port).
+    std::vector<std::uint16_t> face_tcp_ports(std::string_view face) const;
+    std::vector<std::uint16_t> face_udp_ports(std::string_view face) const;
     std::string serial_device() const { return serial_ ? serial_->device() : std::string(); }   // --serial's /dev/pts/N
-    std::vector<std::uint16_t> jw51cm_tcp_ports() const;   // empty when it has no JW-51CM TCP port
-    std::vector<std::uint16_t> jw51cm_udp_ports() const;
     void stop();
 
     void refuse_connections(bool refusing) override;
@@ -48,20 +47,21 @@ public:
     std::vector<station::PushTarget> push_targets() override;
 
 private:
-    void listen_hostlink(const station::Home& home, station::Station& station, const config::ServerConfig& config,
-                         const config::HostLinkConfig& hostlink, const boost::asio::ip::address& bind);
-    void listen_jw51cm(const station::Home& home, station::Station& station, const config::ServerConfig& config,
-                       const config::Jw51cmConfig& jw, const boost::asio::ip::address& bind);
+    // One face: its unit, and its TCP/UDP ports and serial line as its settings say.
+    struct Served {
+        std::unique_ptr<frontends::Unit> unit;
+        std::unique_ptr<TcpListener> tcp;
+        std::unique_ptr<FrontEndUdpListener> udp;
+    };
+    void listen_face(const station::Home& home, station::Station& station, const config::ServerConfig& config,
+                     const frontends::Settings& settings, const boost::asio::ip::address& bind);
+    const Served* served(std::string_view face) const;
 
     station::Station* station_ = nullptr;   // whose frontends() name ours (cleared on destruction)
     std::vector<std::unique_ptr<TcpListener>> tcp_;
     std::vector<std::unique_ptr<UdpListener>> udp_;
-    std::unique_ptr<hostlink::HostLink> hostlink_;
-    std::unique_ptr<TcpListener> hostlink_tcp_;
+    std::vector<Served> faces_;
     std::unique_ptr<SerialPort> serial_;
-    std::unique_ptr<jw51cm::ComputerLink> jw51cm_;
-    std::unique_ptr<TcpListener> jw51cm_tcp_;
-    std::unique_ptr<FrontEndUdpListener> jw51cm_udp_;
 };
 
 // "5000,5001", or "-" for none (log lines and the ready file).

@@ -25,19 +25,20 @@ constexpr const char* kVersion = "slmp-sim 0.1.0";
 // command line; the other transport keeps its ports.
 // Options that name one station's ports, files or identity: refused with a plant.
 constexpr const char* kOneStationOptions[] = {"profile", "bind", "tcp-port", "udp-port", "drive", "labels", "snapshot",
-                                              "record", "record-pcap", "hostlink-port", "serial", "network-no",
+                                              "record", "record-pcap", "network-no",
                                               "station-no", "program"};
+
+// ... and the protocol faces' (frontends/face.hpp).
+std::vector<std::string_view> one_station_options() {
+    std::vector<std::string_view> options(std::begin(kOneStationOptions), std::end(kOneStationOptions));
+    for (const auto* face : frontends::faces())
+        for (auto option : face->one_station_options()) options.push_back(option);
+    return options;
+}
 
 void replace_ports(config::ServerConfig& c, Transport transport, const std::vector<unsigned>& ports) {
     std::erase_if(c.ports, [&](const PortConfig& p) { return p.transport == transport; });
     for (auto port : ports) c.ports.push_back(PortConfig{transport, static_cast<std::uint16_t>(port)});
-}
-
-// The protocol faces' flags (the host link's; docs/hostlink.md).
-void add_frontend_options(po::options_description& options) {
-    options.add_options()
-        ("hostlink-port", po::value<unsigned>(), "serve the Ladder Motion host link on this TCP port too; 0 = any free port (docs/hostlink.md)")
-        ("serial", po::value<std::string>(), "also serve the host link on a pseudo-terminal and link PATH to it (RS-232C-style tools; needs a host link)");
 }
 
 // The flags of the settings table (config/settings.cpp), in its order; the
@@ -59,7 +60,8 @@ void add_table_options(po::options_description& options) {
                 break;
             case config::FlagArg::TextList: add(name.c_str(), po::value<std::vector<std::string>>(), help); break;
         }
-        if (row.long_flag() == "config") add_frontend_options(options);
+        if (row.long_flag() == "config")
+            for (const auto* face : frontends::faces()) face->add_options(options);
     }
 }
 
@@ -161,26 +163,13 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
         c.clock_frozen = mode == "frozen";
     }
     if (vm.count("snapshot")) c.snapshot_file = vm["snapshot"].as<std::string>();
-    if (vm.count("hostlink-port")) {
-        auto port = vm["hostlink-port"].as<unsigned>();
-        if (port > 65535) throw ConfigError("--hostlink-port " + std::to_string(port) + ": not a port number; use 0-65535 (0 = any free port)");
-        config::enable_hostlink(frontends.hostlink);
-        frontends.hostlink.port.port = static_cast<std::uint16_t>(port);
-    }
-    if (vm.count("serial")) {
-        if (!frontends.hostlink.enabled)
-            throw ConfigError("--serial serves the Ladder Motion host link; give \"kind\": \"ladder-motion\", a \"hostlink\" "
-                              "section or --hostlink-port too");
-        frontends.hostlink.serial_path = vm["serial"].as<std::string>();
-    }
-    if (frontends.kind == config::StationKind::LadderMotion && !c.ports.empty())
-        throw ConfigError("a ladder-motion station serves no SLMP ports; leave out --tcp-port/--udp-port (its port is "
-                          "--hostlink-port or \"hostlink\": {\"tcp_port\": ...}), or use \"kind\": \"melsec\" to serve both");
-    if (frontends.kind == config::StationKind::SharpJw && (!c.ports.empty() || frontends.hostlink.enabled))
-        throw ConfigError("a sharp-jw station serves only the JW-51CM computer link; leave out --tcp-port/--udp-port/"
-                          "--hostlink-port (its ports are \"jw51cm\": {\"tcp_port\": ..., \"udp_port\": ...}), or use "
-                          "\"kind\": \"melsec\" to serve several protocols");
-    if (c.ports.empty() && !frontends.hostlink.enabled && !frontends.jw51cm.enabled)
+    // The protocol faces' own options (frontends/face.hpp), then: a station of a
+    // face's kind serves that face alone.
+    for (const auto* face : frontends::faces())
+        face->apply_options(vm, frontends.find(face->name()), [&]() -> frontends::Settings& { return frontends.enable(*face); });
+    if (const auto* only = frontends.kind_face(); only && (!c.ports.empty() || frontends.faces.size() > 1))
+        throw ConfigError(only->command_line_refusal());
+    if (c.ports.empty() && frontends.faces.empty())
         throw ConfigError((c.name.empty() ? std::string() : "station '" + c.name + "': ") + "no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
 }
 
@@ -235,9 +224,9 @@ CommandLine parse_command_line(int argc, char** argv) {
     }
     if (vm.count("threads")) cl.plant.threads = vm["threads"].as<unsigned>();
     if (cl.plant.plant)
-        for (const char* option : kOneStationOptions)
-            if (vm.count(option))
-                throw ConfigError(std::string("--") + option + " sets one station, and the configuration is a plant of " +
+        for (std::string_view option : one_station_options())
+            if (vm.count(std::string(option)))
+                throw ConfigError("--" + std::string(option) + " sets one station, and the configuration is a plant of " +
                                   std::to_string(cl.plant.stations.size()) + " stations; give it in each station's "
                                   "entry in the file instead (docs/plants.md)");
     for (auto& station : cl.plant.stations) apply_station_options(vm, cl.plant.plant, station);

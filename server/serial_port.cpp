@@ -26,8 +26,8 @@ namespace {
 
 }  // namespace
 
-SerialPort::SerialPort(const station::Home& home, hostlink::HostLink& link, std::filesystem::path link_path)
-    : link_(link), master_(home), link_path_(std::move(link_path)) {
+SerialPort::SerialPort(const station::Home& home, frontends::Unit& unit, std::filesystem::path link_path)
+    : unit_(unit), state_(unit.new_session()), master_(home), link_path_(std::move(link_path)) {
     int master = ::posix_openpt(O_RDWR | O_NOCTTY);
     if (master < 0) fail("cannot open a pseudo-terminal");
     if (::grantpt(master) != 0 || ::unlockpt(master) != 0) {
@@ -51,7 +51,7 @@ SerialPort::SerialPort(const station::Home& home, hostlink::HostLink& link, std:
     if (ec)
         throw config::ConfigError("--serial " + link_path_.string() + ": cannot create the link to " + device_ + ": " +
                                   ec.message() + "; give a path in a writable folder");
-    asio::co_spawn(home, serve(), station::log_exception("host link on " + device_ + ": read loop failed"));
+    asio::co_spawn(home, serve(), station::log_exception(std::string(unit_.face().log_name()) + " on " + device_ + ": read loop failed"));
 }
 
 SerialPort::~SerialPort() {
@@ -68,15 +68,15 @@ asio::awaitable<void> SerialPort::serve() {
         auto n = co_await master_.async_read_some(asio::buffer(chunk), asio::redirect_error(asio::use_awaitable, ec));
         if (ec) {
             if (ec == asio::error::operation_aborted || !master_.is_open()) co_return;
-            spdlog::warn("host link on {}: read failed: {}", device_, ec.message());
+            spdlog::warn("{} on {}: read failed: {}", unit_.face().log_name(), device_, ec.message());
             co_return;
         }
         pending.insert(pending.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
         std::string out;
         std::size_t offset = 0;
         while (offset < pending.size()) {
-            auto result = link_.handle(std::span<const std::uint8_t>(pending).subspan(offset), state_);
-            if (result.kind == hostlink::Cut::Kind::NeedMore) break;
+            auto result = unit_.stream(std::span<const std::uint8_t>(pending).subspan(offset), state_.get(), {});
+            if (result.need_more) break;
             offset += result.consumed;
             out += result.response;
         }

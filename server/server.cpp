@@ -130,12 +130,12 @@ void Server::log_stations() const {
                      profile.model_code, s.settings.server.bind, port_list(s.listeners.tcp_ports()),
                      port_list(s.listeners.udp_ports()));
         const auto& frontends = s.settings.frontends;
-        if (frontends.hostlink.enabled)
-            spdlog::info("{} station: Ladder Motion host link on TCP {}", config::kind_name(frontends.kind),
-                         port_list(s.listeners.hostlink_ports()));
-        if (frontends.jw51cm.enabled)
-            spdlog::info("{} station: JW-51CM computer link on TCP {} / UDP {}", config::kind_name(frontends.kind),
-                         port_list(s.listeners.jw51cm_tcp_ports()), port_list(s.listeners.jw51cm_udp_ports()));
+        for (const auto& face : frontends.faces) {
+            auto name = face.face->name();
+            auto ports = "TCP " + port_list(s.listeners.face_tcp_ports(name));
+            if (face.face->has_udp()) ports += " / UDP " + port_list(s.listeners.face_udp_ports(name));
+            spdlog::info("{} station: {} on {}", config::kind_name(frontends.kind), face.face->title(), ports);
+        }
     }
     if (stations_.size() > kStationsLogged)
         spdlog::info("... and {} more stations (GET /api/stations lists them all)", stations_.size() - kStationsLogged);
@@ -189,10 +189,15 @@ void Server::write_ready_file() const {
     // A port kind with no ports is an empty list (port_list's "-" is for the log line).
     auto ports_of = [](const Served& s) {
         nlohmann::json ready{{"tcp", s.listeners.tcp_ports()}, {"udp", s.listeners.udp_ports()}};
-        if (s.settings.frontends.hostlink.enabled) ready["hostlink"] = s.listeners.hostlink_ports();
+        // A face: its TCP ports, or {"tcp": [...], "udp": [...]} when it has UDP ones too.
+        for (const auto& face : s.settings.frontends.faces) {
+            std::string name(face.face->name());
+            if (face.face->has_udp())
+                ready[name] = {{"tcp", s.listeners.face_tcp_ports(name)}, {"udp", s.listeners.face_udp_ports(name)}};
+            else
+                ready[name] = s.listeners.face_tcp_ports(name);
+        }
         if (!s.listeners.serial_device().empty()) ready["serial"] = s.listeners.serial_device();
-        if (s.settings.frontends.jw51cm.enabled)
-            ready["jw51cm"] = {{"tcp", s.listeners.jw51cm_tcp_ports()}, {"udp", s.listeners.jw51cm_udp_ports()}};
         return ready;
     };
     auto ready = ports_of(*stations_.front());   // a plant's first station here too, as before plants

@@ -43,10 +43,10 @@ struct PushRecord {
     std::string_view why;                      // "POST /api/ondemand", "timeline /timeline/steps/0", ...
 };
 
-// One request a front end (the host link, the JW-51CM computer link) handled,
-// reported like an SLMP one (docs/hostlink.md, docs/jw51cm.md). Valid only during the call.
+// One request a protocol face (frontends/face.hpp) handled, reported like an
+// SLMP one. Valid only during the call.
 struct FrontEndRecord {
-    std::string_view protocol;                 // "hostlink", "jw51cm"
+    std::string_view protocol;                 // the face's name
     std::uint64_t connection = 0;              // TCP connection id, or the UDP port's session id
     const slmp::protocol::Peer& peer;          // (qualified: `protocol` is a member here)
     std::string_view command;                  // "RD", "24" (JW COM in hex); empty: none could be read

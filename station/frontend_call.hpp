@@ -1,4 +1,4 @@
-// One request to a front end (the host link, the JW-51CM computer link),
+// One request to a protocol face (frontends/face.hpp),
 // wrapped the way Station::handle() wraps an SLMP frame: the scenario faults
 // see it once its command is known (gate()), and when the front end has
 // answered, finish() records it (--record) and reports it to the station's

@@ -1,8 +1,6 @@
-// The front ends' own state, beyond the device memory they map onto
-// (docs/hostlink.md, docs/jw51cm.md): the host link's RE/WE environment and
-// RP/WP object images; the JW-51CM unit's write-permission mode, system
-// memory, program image and clock (offset, and the instant it was stopped).
-// Held as named parts ("hostlink environment", "jw51cm program", ...) so a
+// The protocol faces' own state, beyond the device memory they map onto
+// (frontends/face.hpp: Unit::save/restore; each face's docs page says what).
+// Held as named parts, prefixed with the face's name, so a
 // station snapshot, its file form and the state directory carry them the same
 // way; a part whose size does not match this configuration is refused.
 #pragma once

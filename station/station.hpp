@@ -25,8 +25,7 @@
 #include "station/station_log.hpp"
 #include "station/transports.hpp"
 
-namespace slmp::hostlink { class HostLink; }
-namespace slmp::jw51cm { class ComputerLink; }
+namespace slmp::frontends { class Unit; }
 
 namespace slmp::station {
 
@@ -168,14 +167,11 @@ public:
     CpuProgram* program() { return program_.get(); }
     devicemodel::Cpu& cpu() { return cpu_; }
     const devicemodel::Cpu& cpu() const { return cpu_; }
-    // The front ends serving this station's memory (frontends/), registered by
-    // the transports that own them (server/listeners.cpp) and cleared when
-    // those stop; null: none. The HTTP API resolves their address names
-    // through them; snapshots and the state directory keep their unit state.
-    struct FrontEnds {
-        hostlink::HostLink* hostlink = nullptr;
-        jw51cm::ComputerLink* jw51cm = nullptr;
-    };
+    // The protocol faces' units serving this station's memory (frontends/face.hpp),
+    // registered by the transports that own them (server/listeners.cpp) and
+    // cleared when those stop; empty: none. The HTTP API resolves their address
+    // names through them; snapshots and the state directory keep their unit state.
+    using FrontEnds = std::vector<frontends::Unit*>;
     FrontEnds& frontends() { return frontends_; }
     // Registers them (before connect(), so the initial snapshot holds their
     // state) and, with a state directory, restores what it saved of them.

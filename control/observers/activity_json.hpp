@@ -18,7 +18,7 @@ nlohmann::json connection_json(const station::Connection& connection);
 // `numbering`: the station CPU's (FX5: X/Y head devices in octal).
 nlohmann::json request_json(const station::RequestRecord& record, devicemodel::Numbering numbering);
 
-// A front end's request in the same shape: "protocol" "hostlink"/"jw51cm",
+// A protocol face's request in the same shape: "protocol" the face's name,
 // "command" its text ("RD", "24"), "subcommand" null, "end_code" the response
 // code or RSLT, and the bytes as hex ("request", "response").
 nlohmann::json frontend_request_json(const station::FrontEndRecord& record);

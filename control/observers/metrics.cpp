@@ -5,6 +5,7 @@
 
 #include "devicemodel/drives.hpp"
 #include "devicemodel/hex.hpp"
+#include "frontends/face.hpp"
 
 namespace slmp::control {
 
@@ -128,10 +129,13 @@ std::string Metrics::render() const {
                std::to_string(count) + "\n";
     }
 
+    std::string faces;   // the protocol faces' names (frontends/face.hpp)
+    for (const auto* face : frontends::faces()) faces += (faces.empty() ? "\"" : ", \"") + std::string(face->name()) + "\"";
     header(out, "slmp_frontend_requests_total", "counter",
-           "Requests to the station's other protocols (protocol \"hostlink\", \"jw51cm\"), by transport, command "
+           ("Requests to the station's other protocols (protocol " + faces + "), by transport, command "
            "(\"other\": not in the front end's table; \"none\": no command could be read) and response code "
-           "(host-link code or JW RSLT; \"none\": not answered, \"closed\": a fault closed the connection).");
+           "(host-link code or JW RSLT; \"none\": not answered, \"closed\": a fault closed the connection).")
+               .c_str());
     for (const auto& [key, count] : frontend_requests_) {
         const auto& [protocol, transport, command, code] = key;
         out += "slmp_frontend_requests_total{protocol=\"" + protocol + "\",transport=\"" +

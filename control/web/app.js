@@ -360,7 +360,7 @@ function addCallRow(cells, className) {
   while (body.rows.length > MAX_CALL_ROWS) body.deleteRow(-1);
 }
 
-// SLMP requests and the front ends' (protocol "hostlink", "jw51cm": a command
+// SLMP requests and the protocol faces' (protocol the face's name: a command
 // text, no subcommand, a two-character response code where 00 is normal).
 function addCall(call) {
   const frontEnd = call.protocol && call.protocol !== 'slmp';

@@ -65,6 +65,8 @@ public:
     devicemodel::Cpu& cpu() { return cpu_; }
     std::vector<std::uint8_t>& environment() { return environment_; }
     std::vector<std::uint8_t>& object() { return object_; }
+    const std::vector<std::uint8_t>& environment() const { return environment_; }
+    const std::vector<std::uint8_t>& object() const { return object_; }
 
 private:
     devicemodel::Cpu& cpu_;

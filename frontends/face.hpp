@@ -1,0 +1,171 @@
+// A protocol face of a station, as a plug-in (docs/architecture.md, "Where to
+// add … a front end"): another controller's protocol served on the same CPU
+// memory — the Ladder Motion host link, the Sharp JW-51CM computer link.
+// The core (config, station, control, scenarios, server) reaches a face only
+// through these two classes and the registry (frontends/registry.cpp, one
+// line a face), as libmodbus's core reaches a transport only through its
+// backend table:
+//
+// - `Face`: what a kind of face is, one static object per kind — its name
+//   (the JSON section, the scenario "protocol", the activity and metrics
+//   label, the ready file's key), its settings (the JSON section's keys, the
+//   command-line options it adds), its ports and log names, its scenario
+//   command syntax, and how it makes a `Unit`.
+// - `Unit`: one station's instance of a face on its CPU — its framing and
+//   command handling (stream()/datagram()), its per-connection state
+//   (new_session()), its address names for the HTTP API (resolve_name()) and
+//   its state beyond device memory for snapshots (save()/restore()).
+//
+// The transports wrap every call in a station::FrontEndCall (faults,
+// recording, activity); a face knows no sockets and no scenarios.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "config/config.hpp"
+#include "devicemodel/cpu.hpp"
+#include "devicemodel/device_table.hpp"
+#include "frontends/gate.hpp"
+
+namespace boost::program_options {
+class options_description;
+class variables_map;
+}  // namespace boost::program_options
+
+namespace slmp::config {
+class JsonAt;
+}
+
+namespace slmp::frontends {
+
+class Face;
+
+// One request cut from the bytes received and answered (or still incomplete).
+struct Exchange {
+    bool need_more = false;      // a request has begun but is not whole: read on
+    std::size_t consumed = 0;    // bytes taken (a request, or garbage dropped)
+    std::string response;        // bytes to send back (empty: none)
+    std::string command;         // its command as text ("RD"; JW: the COM in hex); empty: none could be read
+    bool known = false;          // the face's command table has it (metrics name others "other")
+    std::string_view name;       // the table's name for it; empty when unknown
+    std::string code;            // the response code answered ("00", "IC", "10"); empty: no answer
+
+    static Exchange more() {     // no whole request yet
+        Exchange e;
+        e.need_more = true;
+        return e;
+    }
+};
+
+// A connection's own protocol state (the host link's QQMR list); faces without one return none.
+struct SessionState {
+    virtual ~SessionState() = default;
+};
+
+// A face's address name resolved for the HTTP API ("DM0100" -> D100).
+struct DeviceName {
+    devicemodel::DeviceAddress start;
+    enum class View : std::uint8_t { Natural, Words, Dwords } view = View::Natural;   // the form's own default view
+};
+
+// Unit state beyond device memory, as named parts ("hostlink environment", ...):
+// a station snapshot, its file form and the state directory carry them alike.
+using Parts = std::map<std::string, std::vector<std::uint8_t>>;
+
+// One station's instance of a face, on its CPU's memory. Lives as long as the
+// listeners that serve it; used on the station's strand only.
+class Unit {
+public:
+    virtual ~Unit() = default;
+    virtual const Face& face() const = 0;
+
+    // A new connection's state (null: the face keeps none).
+    virtual std::unique_ptr<SessionState> new_session() { return nullptr; }
+    // The front of a stream's buffered bytes: one request cut and answered, or need_more.
+    // `gate` (a scenario fault) is asked once the request's command is known.
+    virtual Exchange stream(std::span<const std::uint8_t> pending, SessionState* session, const Gate& gate) = 0;
+    // One datagram, whole.
+    virtual Exchange datagram(std::span<const std::uint8_t> datagram, const Gate& gate) { return stream(datagram, nullptr, gate); }
+
+    // A name in the face's own address form; nullopt when `text` is not one,
+    // with *error set when it is one but wrong.
+    virtual std::optional<DeviceName> resolve_name(std::string_view, std::string*) const { return std::nullopt; }
+
+    // Its parts and the size each must have; restore() gets only checked parts
+    // (sizes, then check()'s problem: empty when good) and keeps its state for absent ones.
+    virtual void save(Parts&) const {}
+    virtual std::vector<std::pair<std::string, std::size_t>> part_sizes() const { return {}; }
+    virtual std::string check(const Parts&) const { return {}; }
+    virtual void restore(const Parts&) {}
+};
+
+// One station's settings of a face: its ports, and the face's own options.
+struct Settings {
+    const Face* face = nullptr;
+    std::optional<config::PortConfig> tcp, udp;   // absent: no such port
+    std::string serial_path;                      // also on a pseudo-terminal linked here (empty: none)
+    std::shared_ptr<void> options;                // the face's own (memory map, codes, sizes)
+};
+
+// What a kind of face is. One static object per kind, registered once.
+class Face {
+public:
+    virtual ~Face() = default;
+
+    // "hostlink": its JSON section, the scenarios' "protocol", the activity's and
+    // metrics' protocol, the ready file's key, the snapshot parts' prefix.
+    virtual std::string_view name() const = 0;
+    virtual std::string_view title() const = 0;      // "Ladder Motion host link" (the start-up log line)
+    virtual std::string_view log_name() const = 0;   // "host link" (a session's log lines)
+    virtual std::string_view port_name() const = 0;  // "host-link" ("cannot listen on the host-link TCP port")
+    // The fix named when its port cannot be had: "\"hostlink\": {\"tcp_port\": ...} or --hostlink-port".
+    virtual std::string port_fix(config::Transport transport) const = 0;
+    virtual bool has_udp() const { return false; }   // ready file: {"tcp", "udp"} instead of a TCP list
+
+    // The station "kind" that serves this face alone ("ladder-motion"; empty: none),
+    // what such a station lacks of it ("host-link port": "a sharp-jw station has no
+    // host-link port"), and the fixes when a station of its kind has SLMP ports.
+    virtual std::string_view station_kind() const { return {}; }
+    virtual std::string_view missing_noun() const = 0;
+    virtual std::string ports_fix() const { return {}; }          // the JSON "ports" key
+    virtual std::string command_line_refusal() const { return {}; }   // --tcp-port/--udp-port (and other faces)
+
+    // Settings: on with its defaults, its JSON section, and its command-line options.
+    virtual Settings defaults() const = 0;
+    virtual void parse(const config::JsonAt& section, Settings& settings) const = 0;
+    virtual void add_options(boost::program_options::options_description&) const {}
+    virtual std::vector<std::string_view> one_station_options() const { return {}; }
+    // Applies the options given; `settings` is this face's entry (null: off so far),
+    // `enable` turns it on with defaults and returns it. Throws config::ConfigError.
+    virtual void apply_options(const boost::program_options::variables_map&, Settings*,
+                               const std::function<Settings&()>& /*enable*/) const {}
+
+    // Scenarios: a fault's "command" in the face's form (normalised in place; false: not one)
+    // and the fixes for a bad command and a bad response code.
+    virtual bool scenario_command(std::string& text) const = 0;
+    virtual std::string_view command_fix() const = 0;
+    virtual std::string_view code_fix() const = 0;
+
+    // The problem with `settings` on this CPU's memory (empty: none; --check-config, start-up).
+    virtual std::string check(devicemodel::Cpu& cpu, const Settings& settings) const = 0;
+    virtual std::unique_ptr<Unit> make_unit(devicemodel::Cpu& cpu, const Settings& settings) const = 0;
+};
+
+// The registered faces, in registration order (frontends/registry.cpp).
+const std::vector<const Face*>& faces();
+const Face* find_face(std::string_view name);
+// For a test's own face: registered after the built-in ones, for the process's life.
+void register_face(const Face& face);
+// The faces' names quoted for a fix, after `first` when given: "\"slmp\", \"a\" or \"b\"".
+std::string face_names(std::string_view first = {});
+
+}  // namespace slmp::frontends

@@ -1,0 +1,226 @@
+// The JW-51CM computer link's face: its settings (docs/configuration.md,
+// docs/jw51cm.md) and its unit, the ComputerLink of one station.
+#include "frontends/jw51cm/face.hpp"
+
+#include <cctype>
+
+#include "config/json_path.hpp"
+#include "devicemodel/byte_reader.hpp"
+#include "devicemodel/hex.hpp"
+#include "frontends/jw51cm/addresses.hpp"
+#include "frontends/jw51cm/command_table.hpp"
+#include "frontends/jw51cm/computer_link.hpp"
+
+namespace slmp::jw51cm {
+
+namespace {
+
+using config::DataCode;
+using config::JsonAt;
+using config::PortConfig;
+using config::Transport;
+
+const PortConfig kTcp{Transport::Tcp, 3000, DataCode::Binary, 8};   // TCP_Passive
+const PortConfig kUdp{Transport::Udp, 3001, DataCode::Binary};
+
+Options& options_of(const frontends::Settings& s) { return *std::static_pointer_cast<Options>(s.options); }
+
+// An optional port: a number, or null for none.
+std::optional<PortConfig> optional_port(const JsonAt& at, PortConfig port) {
+    if (at.json().is_null()) return std::nullopt;
+    port.port = static_cast<std::uint16_t>(at.unsigned_int(65535));
+    return port;
+}
+
+constexpr std::size_t kClockBytes = 17;
+
+class Unit final : public frontends::Unit {
+public:
+    Unit(devicemodel::Cpu& cpu, const Options& options) : link_(cpu, options) {}
+
+    const frontends::Face& face() const override { return jw51cm::face(); }
+
+    frontends::Exchange stream(std::span<const std::uint8_t> pending, frontends::SessionState*,
+                               const frontends::Gate& gate) override {
+        auto result = link_.handle_stream(pending, gate);
+        if (result.kind == ComputerLink::Result::Kind::NeedMore) return frontends::Exchange::more();
+        return report(pending.first(result.consumed), result);
+    }
+    frontends::Exchange datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate) override {
+        auto result = link_.handle_datagram(datagram, gate);
+        return report(datagram, result);
+    }
+
+    std::optional<frontends::DeviceName> resolve_name(std::string_view text, std::string* error) const override {
+        auto cell = jw51cm::resolve_name(link_.map(), text, error);
+        if (!cell) return std::nullopt;
+        return frontends::DeviceName{*cell};
+    }
+
+    void save(frontends::Parts& parts) const override {
+        parts["jw51cm write mode"] = {link_.write_mode_};
+        parts["jw51cm system memory"] = link_.system_memory;
+        parts["jw51cm program"] = link_.program;
+        parts["jw51cm clock"] = clock();
+    }
+    std::vector<std::pair<std::string, std::size_t>> part_sizes() const override {
+        return {{"jw51cm write mode", 1},
+                {"jw51cm system memory", link_.system_memory.size()},
+                {"jw51cm program", link_.program.size()},
+                {"jw51cm clock", kClockBytes}};
+    }
+    std::string check(const frontends::Parts& parts) const override {
+        auto mode = parts.find("jw51cm write mode");
+        if (mode != parts.end() && mode->second[0] > 2) return "the snapshot's 'jw51cm write mode' is not 0, 1 or 2";
+        return {};
+    }
+    void restore(const frontends::Parts& parts) override {
+        if (auto it = parts.find("jw51cm write mode"); it != parts.end()) link_.write_mode_ = it->second[0];
+        if (auto it = parts.find("jw51cm system memory"); it != parts.end()) link_.system_memory = it->second;
+        if (auto it = parts.find("jw51cm program"); it != parts.end()) link_.program = it->second;
+        if (auto it = parts.find("jw51cm clock"); it != parts.end()) {
+            devicemodel::ByteReader clock(it->second);   // kClockBytes, checked by check()
+            link_.clock_offset = std::chrono::seconds(static_cast<std::int64_t>(*clock.u64()));
+            const auto stopped = *clock.u8();
+            const auto at = static_cast<std::int64_t>(*clock.u64());
+            if (stopped)
+                link_.clock_stopped = std::chrono::system_clock::time_point(std::chrono::seconds(at));
+            else
+                link_.clock_stopped.reset();
+        }
+    }
+
+private:
+    // A result reported: the COM (when the request reached it) and the RSLT answered.
+    static frontends::Exchange report(std::span<const std::uint8_t> request, ComputerLink::Result& result) {
+        constexpr std::size_t kCom = kHeaderBytes + 2;
+        const bool has_com = request.size() > kCom;
+        const auto* row = has_com ? find_command(result.command) : nullptr;
+        frontends::Exchange e;
+        e.consumed = result.consumed;
+        e.code = result.response.size() > kCom + 1 ? devicemodel::hex2(result.response[kCom + 1]) : std::string();
+        e.command = has_com ? devicemodel::hex2(result.command) : std::string();
+        e.known = row != nullptr;
+        e.name = row ? row->name : std::string_view();
+        e.response.assign(result.response.begin(), result.response.end());
+        return e;
+    }
+
+    // The clock: the offset in seconds, then 1 and the stop instant (s since
+    // the epoch) when B3 CTRL 01 stopped it, else 0 and 0. 17 bytes.
+    std::vector<std::uint8_t> clock() const {
+        devicemodel::ByteWriter out;
+        out.u64(static_cast<std::uint64_t>(link_.clock_offset.count()));
+        out.u8(link_.clock_stopped ? 1 : 0);
+        auto stopped = link_.clock_stopped
+                           ? std::chrono::duration_cast<std::chrono::seconds>(link_.clock_stopped->time_since_epoch()).count()
+                           : 0;
+        out.u64(static_cast<std::uint64_t>(stopped));
+        return std::move(out.out);
+    }
+
+    ComputerLink link_;
+};
+
+class Face final : public frontends::Face {
+public:
+    std::string_view name() const override { return "jw51cm"; }
+    std::string_view title() const override { return "JW-51CM computer link"; }
+    std::string_view log_name() const override { return "JW-51CM"; }
+    std::string_view port_name() const override { return "JW-51CM"; }
+    std::string port_fix(Transport transport) const override {
+        return std::string("\"jw51cm\": {\"") + (transport == Transport::Tcp ? "tcp" : "udp") + "_port\": ...}";
+    }
+    bool has_udp() const override { return true; }
+
+    std::string_view station_kind() const override { return "sharp-jw"; }
+    std::string_view missing_noun() const override { return "JW-51CM unit"; }
+    std::string ports_fix() const override {
+        return "remove \"ports\" (the unit's ports are \"jw51cm\": {\"tcp_port\": ..., \"udp_port\": ...}), "
+               "or use \"kind\": \"melsec\" with a \"jw51cm\" section to serve both on one memory";
+    }
+    std::string command_line_refusal() const override {
+        return "a sharp-jw station serves only the JW-51CM computer link; leave out --tcp-port/--udp-port/"
+               "--hostlink-port (its ports are \"jw51cm\": {\"tcp_port\": ..., \"udp_port\": ...}), or use "
+               "\"kind\": \"melsec\" to serve several protocols";
+    }
+
+    frontends::Settings defaults() const override {
+        frontends::Settings s;
+        s.face = this;
+        s.tcp = kTcp;
+        s.udp = kUdp;
+        s.options = std::make_shared<Options>();   // file sizes, T/C attributes
+        return s;
+    }
+
+    void parse(const JsonAt& at, frontends::Settings& j) const override {
+        at.only_keys({"tcp_port", "udp_port", "max_connections", "idle_timeout_ms", "partial_frame_timeout_ms",
+                      "file_bytes", "timers", "timer_attributes"});
+        auto& options = options_of(j);
+        if (at.has("tcp_port")) j.tcp = optional_port(at["tcp_port"], j.tcp.value_or(kTcp));
+        if (at.has("udp_port")) j.udp = optional_port(at["udp_port"], j.udp.value_or(kUdp));
+        if (!j.tcp && !j.udp) at.fail("no port left", "give \"tcp_port\" or \"udp_port\" a number (the unit needs a TCP_Passive or UDP connection)");
+        if (j.tcp) {
+            if (at.has("max_connections")) {
+                j.tcp->max_connections = static_cast<unsigned>(at["max_connections"].unsigned_int(8));
+                if (*j.tcp->max_connections == 0) at["max_connections"].fail("must be 1-8", "the unit has 8 connections; use 1-8");
+            }
+            if (at.has("idle_timeout_ms")) j.tcp->idle_timeout_ms = static_cast<unsigned>(at["idle_timeout_ms"].unsigned_int(86400000));
+            if (at.has("partial_frame_timeout_ms"))
+                j.tcp->partial_frame_timeout_ms = static_cast<unsigned>(at["partial_frame_timeout_ms"].unsigned_int(86400000));
+        }
+        if (at.has("file_bytes")) {
+            options.file_bytes = static_cast<std::uint32_t>(at["file_bytes"].unsigned_int(65536));
+            if (options.file_bytes % 2 != 0) at["file_bytes"].fail("must be even", "use e.g. 16384 or 65536");
+        }
+        if (at.has("timers")) options.timers = static_cast<std::uint32_t>(at["timers"].unsigned_int(1024));
+        if (at.has("timer_attributes")) {
+            auto attributes = at["timer_attributes"];
+            attributes.expect_object();
+            for (const auto& [number, _] : attributes.json().items()) {
+                std::size_t used = 0;
+                unsigned long value = 0;
+                try {
+                    value = std::stoul(number, &used, 8);
+                } catch (const std::exception&) {
+                    used = 0;
+                }
+                if (used != number.size() || value >= options.timers)
+                    attributes[number].fail("'" + number + "' is not a T/C number", "write it in octal, 0000-1777 (TMR0002 is \"0002\")");
+                auto code = attributes[number].hex_code();
+                if (code > 0x0F) attributes[number].fail("not a T/C attribute", "use 0000-000F (04 TMR, 02 CNT, 08 DTMR BCD, ...)");
+                options.timer_attributes[static_cast<std::uint32_t>(value)] = static_cast<std::uint8_t>(code);
+            }
+        }
+    }
+
+    // A JW-51CM COM is two hex digits, compared in uppercase.
+    bool scenario_command(std::string& text) const override {
+        bool ok = text.size() == 2;
+        for (auto& c : text) {
+            ok = ok && std::isxdigit(static_cast<unsigned char>(c));
+            c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        }
+        return ok;
+    }
+    std::string_view command_fix() const override { return "write the COM as two hex digits, e.g. \"24\""; }
+    std::string_view code_fix() const override { return "write the RSLT as two hex digits, e.g. \"10\""; }
+
+    std::string check(devicemodel::Cpu& cpu, const frontends::Settings& s) const override {
+        ComputerLink link(cpu, options_of(s));
+        return link.map().check(cpu.memory());
+    }
+    std::unique_ptr<frontends::Unit> make_unit(devicemodel::Cpu& cpu, const frontends::Settings& s) const override {
+        return std::make_unique<Unit>(cpu, options_of(s));
+    }
+};
+
+}  // namespace
+
+const frontends::Face& face() {
+    static const Face instance;
+    return instance;
+}
+
+}  // namespace slmp::jw51cm
