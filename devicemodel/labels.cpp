@@ -264,7 +264,7 @@ std::optional<LabelProblem> LabelTable::add_label(LabelDecl decl, const DeviceMe
                     if (m.type.kind != LabelType::Kind::Basic)
                         return LabelProblem{"structure '" + label.type.structure->name + "' has member '" + m.name +
                                                 "' of a structure or timer type, and such a label cannot be "
-                                                "assigned to a device (slmp-labels-remote-misc.md §2.3)",   // signposts: allow (a message users see, kept as it is)
+                                                "assigned to a device (docs/labels.md, \"Assigned to a device\")",
                                             "remove \"device\" to place the label in the label area"};
             count = label.words;
         }

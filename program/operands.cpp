@@ -4,6 +4,8 @@
 #include "program/operands.hpp"
 #include "program/operand_device.hpp"
 
+#include "devicemodel/hex.hpp"
+
 #include <array>
 #include <cctype>
 #include <charconv>
@@ -92,11 +94,12 @@ bool parse_device(std::string_view text, devicemodel::Numbering numbering, Parse
     if (dot != std::string_view::npos) {
         auto bit_text = rest.substr(dot + 1);
         rest = rest.substr(0, dot);
-        if (bit_text.size() != 1 || !std::isxdigit(static_cast<unsigned char>(bit_text[0]))) {
+        const int bit = bit_text.size() == 1 ? devicemodel::hex_digit(static_cast<unsigned char>(bit_text[0])) : -1;
+        if (bit < 0) {
             error = "bad bit number in '" + std::string(whole) + "' (0-F, e.g. D0.F)";
             return false;
         }
-        out.bit = bit_text[0] <= '9' ? bit_text[0] - '0' : bit_text[0] - 'A' + 10;
+        out.bit = bit;   // either case: D0.a is D0.A
     }
     if (!split_index(rest, out, error, whole)) return false;
     const int radix = symbol->spec ? static_cast<int>(devicemodel::radix_of(*symbol->spec, numbering)) : 10;

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "engine_support.hpp"
+#include "program/operands.hpp"
 
 using namespace engine_test;
 
@@ -184,4 +185,16 @@ TEST_CASE("load warnings: double coil of a bit, MC without MCR", "[program][engi
     REQUIRE(warnings.size() == 2);
     CHECK(warnings[0] == "test.il: line 4: Y0 has OUT at lines 2 and 4 (double coil: the last one executed wins)");
     CHECK(warnings[1] == "test.il: line 6: MC N0 has no MCR; it stays in force to END");
+}
+
+TEST_CASE("a bit of a word device takes its hex digit in either case; anything else is refused", "[program][engine][load]") {
+    std::string error;
+    auto lower = slmp::program::detail::parse_operand("D0.a", slmp::devicemodel::Numbering{}, error);
+    REQUIRE(lower);
+    CHECK(lower->bit == 10);   // was bit 42, past the word
+    auto upper = slmp::program::detail::parse_operand("D0.F", slmp::devicemodel::Numbering{}, error);
+    REQUIRE(upper);
+    CHECK(upper->bit == 15);
+    CHECK_FALSE(slmp::program::detail::parse_operand("D0.G", slmp::devicemodel::Numbering{}, error));
+    CHECK(error == "bad bit number in 'D0.G' (0-F, e.g. D0.F)");
 }

@@ -122,7 +122,7 @@ TEST_CASE("declaration mistakes stop start-up with the file, the pointer and the
                                             {"name": "Out", "members": [{"name": "i", "type": "In"}]}],
                             "labels": [{"name": "A", "type": "Out", "device": "D0"}]})J") ==
           "test.json: /labels/0/device: structure 'Out' has member 'i' of a structure or timer type, and such a label "
-          "cannot be assigned to a device (slmp-labels-remote-misc.md §2.3); remove \"device\" to place the label in "   // signposts: allow (the message devicemodel/labels.cpp gives)
+          "cannot be assigned to a device (docs/labels.md, \"Assigned to a device\"); remove \"device\" to place the label in "
           "the label area");
     CHECK_THAT(declare_error(R"J({"structures": [{"name": "Out", "members": [{"name": "i", "type": "Later"}]},
                                             {"name": "Later", "members": [{"name": "x", "type": "INT"}]}]})J"),
