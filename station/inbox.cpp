@@ -33,23 +33,22 @@ void Inbox::received() {
     stamps_.push_back({end, station_.scan_loop()->clock().now()});
 }
 
+// Not a coroutine itself: the instant path costs no coroutine frame of its
+// own, only on_home's hop (the usual case, a request at a time).
 StrandTask<> Inbox::serve() {
     served_.responses.clear();   // keeps its capacity
     served_ = {std::move(served_.responses)};
     waiting_ = false;
-    if (at_once_) {
-        co_await on_home(
-            home_,
-            [this] {
-                begin_frames();
-                while (consumed_ < bytes_.size()) {
-                    const auto input = unserved();
-                    if (!take(station_.handle(input, policy_, session_, peer_), input, false)) break;
-                }
-            },
-            use_strand);
-    } else {
-        co_await serve_timed();
+    if (at_once_) return on_home(home_, [this] { serve_at_once(); }, use_strand);
+    return serve_timed();
+}
+
+// On the station's strand; the connection waits for it meanwhile, so its bytes are this step's.
+void Inbox::serve_at_once() {
+    begin_frames();
+    while (consumed_ < bytes_.size()) {
+        const auto input = unserved();
+        if (!take(station_.handle(input, policy_, session_, peer_), input, false)) break;
     }
     drop_served();
 }
@@ -86,6 +85,11 @@ bool Inbox::take(Handled handled, std::span<const std::uint8_t> frame, bool owne
 // end_of_scan and model (docs/timing.md). The connection lives on the
 // station's strand, so this touches the station directly.
 StrandTask<> Inbox::serve_timed() {
+    co_await hold_for_clock();
+    drop_served();
+}
+
+StrandTask<> Inbox::hold_for_clock() {
     auto& scan = *station_.scan_loop();
     const bool end_of_scan = station_.timing_mode() == config::TimingMode::EndOfScan;
     // end_of_scan: the first whole request waits for the END after its

@@ -96,7 +96,9 @@ private:
     // Takes the station's answer to the frame at the start of `frame` (`owned`:
     // its bytes already left bytes()); false when the frames of this turn end here.
     bool take(Handled handled, std::span<const std::uint8_t> frame, bool owned);
-    StrandTask<> serve_timed();
+    void serve_at_once();
+    StrandTask<> serve_timed();      // end_of_scan and model: hold_for_clock(), then what it served leaves bytes_
+    StrandTask<> hold_for_clock();
     // One wait on the clock (ScanLoop::until_end_or) while the feed is read.
     StrandTask<> wait(std::optional<std::uint64_t> seen, std::optional<TimePoint> at);
     bool read_ready();                          // from the feed into bytes_, stamped
