@@ -4,8 +4,8 @@
 Fails (exit 1, one line per finding: file:line: what; the fix) when
   1. docs/architecture.md names a file or folder that does not exist;
   2. a source file names a repository file that does not exist (a path from a
-     top-level folder, "station/station_timing.cpp", or a bare source file name,
-     "station_timing.cpp", that no folder holds);
+     top-level folder, "station/station_snapshot.cpp", or a bare source file name,
+     "station_snapshot.cpp", that no folder holds);
   3. a source file or a Markdown page cites a file outside the repository
      (../shared/spec/..., a spec note such as "frames.md §3" that the repository
      has no page of, STYLE.md, seeds/): a reader of the project cannot open it.
@@ -86,7 +86,7 @@ URL = re.compile(r"\b[a-z]+://\S+")
 # ends in "/") or a pattern ("config/profiles/*.json"); "program/system memory"
 # is prose.
 REPO_PATH = re.compile(r"(?<![\w./-])((?:%s)/[\w./*{},-]*(?:\.[\w*}]+|/))(?![\w/-])" % "|".join(TOP))
-# A bare source file name ("station_timing.cpp"), or a backticked stem ("`station_log.*`").
+# A bare source file name ("station_snapshot.cpp"), or a backticked stem ("`station_log.*`").
 BARE_SOURCE = re.compile(r"(?<![\w./*<-])([A-Za-z_][\w-]*\.(?:cpp|hpp|py|lua|cmake))(?![\w/.-]|\.\w)|`([A-Za-z_][\w-]*\.\*)`")
 MD_NAME = re.compile(r"(?<![\w/-])((?:\.\./)*[\w./-]*[\w-]+\.md)\b")
 # Citations of what lies outside: the shared folder beside the repository, its

@@ -1,14 +1,22 @@
+// One simulated controller (station.hpp): built from the configuration,
+// serving every request (handle), its scenarios, Ondemand pushes and when
+// the timing modes serve a request. Its snapshots: station_snapshot.cpp.
 #include "station/station.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include <spdlog/spdlog.h>
 
-#include "protocol/lock_owner.hpp"
-#include "station/log_outcome.hpp"
+#include "config/station_pattern.hpp"
 #include "protocol/error_response.hpp"
+#include "protocol/lock_owner.hpp"
+#include "protocol/ondemand.hpp"
+#include "scenarios/initial_state.hpp"
+#include "scenarios/loader.hpp"
 #include "station/cpu_program.hpp"
 #include "station/drive_state.hpp"
+#include "station/log_outcome.hpp"
 #include "station/persistence.hpp"
 #include "station/response_timing.hpp"
 #include "station/scan_loop.hpp"
@@ -18,6 +26,7 @@
 namespace slmp::station {
 
 using protocol::Outcome;
+using std::chrono::microseconds;
 
 Station::Station(config::Profile profile, protocol::EngineOptions options)
     : cpu_(std::move(profile.cpu)), engine_(cpu_, std::move(profile.port), options), timing_model_(profile.timing) {}
@@ -146,6 +155,164 @@ void Station::restart() {
     for (const auto& [id, _] : activity_.connections()) ids.push_back(id);
     for (auto id : ids) activity_.close(id, "Remote RESET: the CPU restarted");
     if (transports_) transports_->restart_sessions();
+}
+
+
+// The station's part in scenarios and recording (docs/scenarios.md): load the
+// --scenario files before the CPU is built (their initial state is part of the
+// configuration), then start them once the ports exist, driven by the scan cycle.
+std::vector<scenarios::Scenario> Station::load_scenarios() {
+    std::vector<scenarios::Scenario> list;
+    for (const auto& file : config_.scenarios) {
+        auto s = scenarios::load_scenario(file);
+        if (!runs(s)) {   // a plant-wide list: the file names other stations
+            log_->debug("scenario '{}' ({}) is for {}, not this station", s.name, s.source, fmt::join(s.stations, ", "));
+            continue;
+        }
+        scenarios::apply_initial_state(s, config_);
+        list.push_back(std::move(s));
+    }
+    scenarios::check_together(list);
+    return list;
+}
+
+bool Station::runs(const scenarios::Scenario& s) const {
+    return s.stations.empty() || config_.name.empty() || config::station_patterns_match(s.stations, config_.name);
+}
+
+void Station::start_scenarios(std::vector<scenarios::Scenario> list) {
+    if (!config_.record_file.empty()) scenario_.record(config_.record_file, cpu_.profile().name);
+    if (!config_.record_pcap_file.empty()) scenario_.record_pcap(config_.record_pcap_file, config_.bind);
+    // With the HTTP API on, scenarios and recordings may start later (POST
+    // /api/scenarios, /api/recording), so the hook is wired up even when idle.
+    const bool later = config_.http.enabled;
+    if (!list.empty() || later) {
+        auto ondemand = [this](const scenarios::OndemandAction& action, const std::string& why) {
+            try {
+                this->ondemand(action, why);
+            } catch (const config::ConfigError& e) {
+                log_->warn("scenario: {}: Ondemand not sent: {}", why, e.what());
+            }
+        };
+        scenario_station_ = std::make_unique<ScenarioStation>(activity_, *transports_, ondemand, *log_);
+        scenario_.attach(cpu_, *scenario_station_);
+        if (!list.empty()) scenario_.start(std::move(list), cpu_, *scenario_station_);
+        scan_->after_scan([this](std::chrono::steady_clock::time_point now) { scenario_.scanned(now); });
+    }
+    if (scenario_.active() || later) activity_.add_observer(&scenario_);
+}
+
+
+// Ondemand 2101 (docs/timing.md): the station reads the devices now and sends
+// their words, unasked, to the clients the action names, in each client's own
+// frame shape (protocol/ondemand.hpp).
+namespace {
+
+bool wanted(const PushTarget& t, const std::string& to) {
+    if (to == "all") return true;
+    if (to == "tcp") return t.peer.transport == Transport::Tcp;
+    if (to == "udp") return t.peer.transport == Transport::Udp;
+    return t.peer.transport == Transport::Tcp && std::to_string(t.session) == to;
+}
+
+}  // namespace
+
+std::vector<Station::Pushed> Station::ondemand(const scenarios::OndemandAction& action, const std::string& why) {
+    const auto& spec = *action.first.spec;
+    const auto name = devicemodel::format_address(action.first, cpu_.profile().numbering);
+    if (!cpu_.memory().contains(spec.area, action.first.number, action.points))
+        throw config::ConfigError("ondemand: " + name + " with " + std::to_string(action.points) + " point(s) runs past the " +
+                                  std::string(devicemodel::area_name(spec.area)) + " size of " +
+                                  std::to_string(cpu_.memory().size(spec.area)) + "; name devices inside it");
+    const auto& to = action.to;
+    if (to != "all" && to != "tcp" && to != "udp" && (to.empty() || to.find_first_not_of("0123456789") != std::string::npos))
+        throw config::ConfigError("ondemand: unknown target '" + to + "'; use \"all\", \"tcp\", \"udp\" or a TCP connection id");
+    const std::size_t words = spec.unit == devicemodel::Unit::Bit ? (action.points + 15) / 16
+                                                                  : std::size_t{action.points} * devicemodel::words_per_device(spec);
+    if (words > protocol::kOndemandMaxWords)
+        throw config::ConfigError("ondemand: " + std::to_string(words) + " words; at most 960 words (1920 bytes) go in one push");
+    std::vector<std::uint16_t> data(words);
+    cpu_.memory().read_words(spec, action.first.number, data);
+
+    std::vector<Pushed> sent;
+    if (!transports_) return sent;
+    for (auto& target : transports_->push_targets()) {
+        if (!wanted(target, to)) continue;
+        auto frame = protocol::encode_ondemand(target.kind, target.codec, data);
+        activity_.pushed({target.session, target.peer, frame, why});
+        sent.push_back({target.session, target.peer, frame});
+        target.send(std::move(frame));
+    }
+    log_->info("Ondemand 2101 ({}): {} word(s) from {} to {} client(s)", why, words, name, sent.size());
+    return sent;
+}
+
+
+// When the end_of_scan and model timing modes serve a request
+// (docs/timing.md). The inbox (station/inbox.hpp) holds the bytes; these say
+// when to hand them to Station::handle() and whether the monitoring timer ran
+// out first.
+
+std::optional<Queued> Station::next_request(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy) const {
+    std::size_t offset = 0;
+    while (offset < input.size()) {
+        const auto rest = input.subspan(offset);
+        const auto scan = engine_.frame(rest, policy);
+        switch (scan.status) {
+            case protocol::FrameScan::Status::NeedMore: return std::nullopt;
+            case protocol::FrameScan::Status::Garbage: offset += std::max<std::size_t>(scan.size, 1); continue;
+            case protocol::FrameScan::Status::TooLarge: return Queued{offset, offset + 1, {}, true};
+            case protocol::FrameScan::Status::Complete: break;
+        }
+        return Queued{offset, offset + scan.size, ResponseTiming::monitoring_timer(scan.header, rest), false};
+    }
+    return std::nullopt;
+}
+
+Ticket Station::schedule(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy, const protocol::Session& session,
+                         std::chrono::steady_clock::time_point arrival) {
+    Ticket ticket;
+    ticket.bytes = std::move(frame);
+    ticket.request = engine_.decode(ticket.bytes, policy, session.own);
+    const auto& request = ticket.request;
+    if (!timing_ || !scan_ || !request.complete() || !request.has_command) return ticket;
+    const auto& clock = scan_->clock();
+    // The next END after the arrival in CPU time: a running clock's scan covers period × speed of it.
+    const auto cpu_period = clock.frozen() ? std::chrono::duration_cast<microseconds>(scan_->period())
+                                           : std::chrono::duration_cast<microseconds>(scan_->period() * clock.speed());
+    const auto next_end = scan_->last_end() + cpu_period;
+    const auto scan_wait = next_end > arrival ? std::chrono::duration_cast<microseconds>(next_end - arrival) : microseconds{0};
+    const auto modelled = timing_->modelled(request, scan_wait);
+    const auto timer = ResponseTiming::monitoring_timer(request, ticket.bytes);
+    // The port gives up when the timer runs out first (docs/timing.md).
+    if (timer.count() > 0 && modelled > timer) ticket.service = Service{arrival + timer, true, timer};
+    else ticket.service = Service{arrival + modelled, false, modelled};
+    return ticket;
+}
+
+std::optional<Service> Station::end_of_scan_service(std::chrono::steady_clock::time_point arrival,
+                                                    std::chrono::milliseconds timer,
+                                                    std::chrono::steady_clock::time_point now, bool at_end) {
+    // The END that serves it has come: in time unless it came after the timer.
+    // Before it: only a timer that has run out answers now.
+    const bool expired = timer.count() > 0 && now - arrival > timer;
+    if (!at_end && !(timer.count() > 0 && now - arrival >= timer)) return std::nullopt;
+    return Service{now, at_end ? expired : true, std::nullopt};
+}
+
+Outcome Station::timed_out(const protocol::Request& request, std::chrono::milliseconds timer) {
+    // CF71, "processing aborted because of a timeout"; the CPU never ran the
+    // request, so nothing is read or written.
+    Outcome o;
+    o.action = Outcome::Action::Respond;
+    o.consumed = request.size;
+    o.command = request.command;
+    o.subcommand = request.subcommand;
+    o.end_code = protocol::EndCode::RelayTimeout;
+    o.response = protocol::encode_error_response(request.header, request.command, request.subcommand, o.end_code);
+    o.note = "the monitoring timer (" + std::to_string(timer.count()) +
+             " ms) ran out before the CPU served the request; answered CF71 when it did";
+    return o;
 }
 
 }  // namespace slmp::station

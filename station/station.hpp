@@ -104,7 +104,7 @@ public:
     // model: a request schedule() decoded, at its time.
     Handled handle(Ticket& ticket, protocol::Session& session, const protocol::Peer& peer);
     // The first whole request in `input`, after bytes the port would skip;
-    // nullopt while none is whole. Frames, does not decode (station_timing.cpp).
+    // nullopt while none is whole. Frames, does not decode.
     std::optional<Queued> next_request(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy) const;
     // model: the whole request `frame`, which arrived at `arrival` (CPU time),
     // decoded, and when it is executed and answered — arrival + the modelled
@@ -191,7 +191,7 @@ public:
 
 private:
     void start_cpu_runtime(const station::Home& home);          // "cpu" parameters, scan cycle, state directory
-    std::vector<scenarios::Scenario> load_scenarios();            // station_scenarios.cpp
+    std::vector<scenarios::Scenario> load_scenarios();
     void start_scenarios(std::vector<scenarios::Scenario> list);
     std::vector<devicemodel::Cpu*> all_cpus();
     // The monitoring timer's answer: CF71 (1E: 60), nothing executed.
