@@ -27,14 +27,12 @@ TcpSession::TcpSession(station::StrandSocket socket, station::Home home, station
     : socket_(std::move(socket)),
       home_(std::move(home)),
       station_(station),
-      policy_(to_policy(port.data_code)),
       idle_timeout_(port.idle_timeout_ms),
       partial_frame_timeout_(port.partial_frame_timeout_ms),
       deadline_timer_(socket_.get_executor()),
       session_(station.new_session(port)),
       on_closed_(std::move(on_closed)),
-      connections_(std::move(connections)),
-      inbox_(station, home_, session_, peer_, policy_, &feed_, connections_) {
+      inbox_(station, home_, session_, peer_, to_policy(port.data_code), &feed_, std::move(connections)) {
     peer_ = accepted_peer(socket_);
 }
 

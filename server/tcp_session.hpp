@@ -64,7 +64,6 @@ private:
     station::StrandSocket socket_;   // its executor: the connection's own strand, or the station's
     station::Home home_;   // the station's strand
     station::Station& station_;
-    protocol::DataCodePolicy policy_;
     std::chrono::milliseconds idle_timeout_;
     std::chrono::milliseconds partial_frame_timeout_;
     std::chrono::steady_clock::time_point last_activity_;
@@ -76,7 +75,6 @@ private:
     protocol::Peer peer_;   // the client, and the simulator's port it reached
     std::string close_reason_ = "closed by the client";
     std::function<void(StreamSession*)> on_closed_;
-    std::function<std::size_t()> connections_;   // the port's open connections (commands per connection)
     bool closed_ = false;
     Outbox* outbox_ = nullptr;            // serve()'s, while it runs
     bool push_pending_ = false;                 // a push cancelled the read; send it
