@@ -64,6 +64,8 @@ public:
             monitor(form);
         }
         extended();
+        every_row();
+        files();
         others();
         remote();
         return std::move(samples_);
@@ -267,6 +269,55 @@ private:
         }
     }
 
+    // Every row of the command table in its smallest form (sample_request), so
+    // that a subcommand no other part names is still compared.
+    void every_row() {
+        for (const auto& row : all_commands()) {
+            auto bytes = sample_request(row, frame_, at("D", 500), at("M", 500));
+            if (!bytes) continue;
+            built(row.command, row.subcommand, std::string(row.name) + ", smallest request", std::move(*bytes));
+        }
+        add("extend unit write 2 bytes to module 03E0", 0x1601, 0x0000, [](FieldWriter& w) {
+            w.u32(0);
+            w.u16(2);
+            w.u16(0x03E0);
+            w.u8(0x12);
+            w.u8(0x34);
+        });
+        std::vector<client::LabelWrite> labels{{"NoSuchLabel", {devicemodel::BasicType::Word, {1}}}};
+        built(0x141B, 0, "label write random of an undeclared label", client::label_write_random(frame_, labels));
+        std::vector<client::ArrayWrite> arrays{{"NoSuchArray[0]", devicemodel::BasicType::Word, {{1}}}};
+        built(0x141A, 0, "array label write of an undeclared label", client::array_label_write(frame_, arrays));
+        add("lock with a 1-character password", 0x1631, 0x0000, [](FieldWriter& w) {
+            w.u16(1);
+            w.raw(std::vector<std::uint8_t>{'x'});
+        });
+    }
+
+    // The file commands that change something, each in the Q/L (0000) and iQ-R
+    // (0040) form: a file made and deleted, and the others on a file that does
+    // not exist or a pointer never opened.
+    void files() {
+        for (bool iqr : {false, true}) {
+            const std::uint16_t s = iqr ? 0x40 : 0;
+            client::FileTarget made{iqr, 4, "DIFF.TMP", ""}, missing{iqr, 4, "NOFILE.CSV", ""};
+            built(0x1820, s, "new file", client::file_new(frame_, made, 64));
+            built(0x1824, s, "copy a file that does not exist", client::file_copy(frame_, made, missing));
+            built(0x1825, s, "state of a file that does not exist", client::file_state(frame_, missing, 0x0001));
+            built(0x1826, s, "date of a file that does not exist", client::file_date(frame_, missing, 0x5821, 0x0000));
+            built(0x1822, s, "delete the new file", client::file_delete(frame_, made));
+        }
+        // 0004, the L CPUs' 32-character-password form (a QnU refuses it).
+        client::FileTarget l_form{false, 4, "NOFILE.CSV", "", true};
+        built(0x1822, 4, "delete a file that does not exist", client::file_delete(frame_, l_form));
+        built(0x1824, 4, "copy a file that does not exist", client::file_copy(frame_, l_form, l_form));
+        built(0x1825, 4, "state of a file that does not exist", client::file_state(frame_, l_form, 0x0001));
+        built(0x1828, 0, "read through a pointer never opened", client::file_read(frame_, 7, 0, 4));
+        std::vector<std::uint8_t> data{1, 2};
+        built(0x1829, 0, "write through a pointer never opened", client::file_write(frame_, 7, 0, data));
+        built(0x182A, 0, "close a pointer never opened", client::file_close(frame_, 7, 0));
+    }
+
     void others() {
         for (auto bytes : {std::uint32_t{1}, port_.loopback_max_bytes, port_.loopback_max_bytes + 1}) {
             add("loopback " + std::to_string(bytes) + " bytes", 0x0619, 0x0000, [&](FieldWriter& w) {
@@ -291,9 +342,9 @@ private:
             w.u16(0x03E0);
         });
         std::vector<std::string> names{"NoSuchLabel"};
-        built(0x041C, "label read random of an undeclared label", client::label_read_random(frame_, names));
+        built(0x041C, 0, "label read random of an undeclared label", client::label_read_random(frame_, names));
         std::vector<client::ArrayRead> arrays{{"NoSuchArray[0]", false, 2}};
-        built(0x041A, "array label read of an undeclared label", client::array_label_read(frame_, arrays));
+        built(0x041A, 0, "array label read of an undeclared label", client::array_label_read(frame_, arrays));
         for (bool iqr : {false, true}) {
             for (std::uint16_t drive = 0; drive <= 4; ++drive) {
                 samples_.push_back({prefix(0x1810, iqr ? 0x40 : 0) + "list drive " + std::to_string(drive),
@@ -315,17 +366,17 @@ private:
         add("word read with a field missing", 0x0401, 0x0000, [](FieldWriter& w) { w.u16(0); });
     }
 
-    void built(std::uint16_t command, std::string label, Bytes bytes) {
-        samples_.push_back({prefix(command, 0) + std::move(label), std::move(bytes)});
+    void built(std::uint16_t command, std::uint16_t subcommand, std::string label, Bytes bytes) {
+        samples_.push_back({prefix(command, subcommand) + std::move(label), std::move(bytes)});
         if (frame_.kind == FrameKind::E4) ++frame_.serial;
     }
 
     void remote() {
-        built(0x1002, "remote STOP", client::remote_stop(frame_));
-        built(0x1005, "remote latch clear", client::remote_latch_clear(frame_));
+        built(0x1002, 0, "remote STOP", client::remote_stop(frame_));
+        built(0x1005, 0, "remote latch clear", client::remote_latch_clear(frame_));
         write(DeviceForm::Q, false, at("D", 100), 2, "(write in STOP)");
-        built(0x1003, "remote PAUSE", client::remote_pause(frame_, client::RemoteMode::Normal));
-        built(0x1001, "remote RUN", client::remote_run(frame_, client::RemoteMode::Force, client::ClearMode::None));
+        built(0x1003, 0, "remote PAUSE", client::remote_pause(frame_, client::RemoteMode::Normal));
+        built(0x1001, 0, "remote RUN", client::remote_run(frame_, client::RemoteMode::Force, client::ClearMode::None));
     }
 
     const PortProfile& port_;
@@ -426,7 +477,7 @@ std::optional<Bytes> sample_request(const CommandSpec& row, const FrameOptions& 
         case 0x1810: return client::file_list(frame, row.subcommand == 0x40, 4, 1, 1);
         case 0x1811:
         case 0x1827: {
-            client::FileTarget missing{row.subcommand == 0x40, 4, "PROBE.NOF", ""};
+            client::FileTarget missing{row.subcommand == 0x40, 4, "PROBE.NOF", "", row.subcommand == 0x0004};
             return row.command == 0x1811 ? client::file_search(frame, missing) : client::file_open(frame, missing, false);
         }
         default: return std::nullopt;   // remote operations, passwords, file changes, labels written

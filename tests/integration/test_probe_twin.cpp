@@ -112,7 +112,9 @@ TEST_CASE("probe twin: a profile changed on purpose (a limit, a refused command)
     auto run = diff("R08CPU", changed.string());
     INFO("stdout: " << run.out << "\nstderr: " << run.err);
     CHECK(run.exit_code == 1);
-    auto result = json_of(run);
+    auto lines = lines_of(run.out);   // the result, then the error line of --json
+    REQUIRE(lines.size() == 2);
+    auto result = nlohmann::json::parse(lines[0]);
     std::string all = result["differences"].dump();
     CHECK(all.find("0401/0000 D0 x961") == std::string::npos);   // 961 is over both limits
     CHECK(all.find("0401/0000 D0 x960 (word limit)") != std::string::npos);
@@ -120,7 +122,7 @@ TEST_CASE("probe twin: a profile changed on purpose (a limit, a refused command)
     CHECK(all.find("D10240 x1 (first point past the end)") != std::string::npos);
 }
 
-TEST_CASE("probe: read-only without --allow-writes; --out is required; --record keeps every exchange",
+TEST_CASE("probe: read-only without --allow-writes, --out required, --record keeps every exchange",
           "[probe][twin]") {
     SimProcess sim(with_args({"--profile", "R08CPU"}));
     TempDir dir;

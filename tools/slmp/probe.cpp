@@ -5,11 +5,13 @@
 #include <iomanip>
 #include <map>
 #include <sstream>
+#include <thread>
 #include <ostream>
 
 #include "config/config.hpp"
 #include "devicemodel/hex.hpp"
 #include "protocol/client_commands.hpp"
+#include "protocol/client_files.hpp"
 #include "protocol/command_table.hpp"
 #include "tools/slmp/errors.hpp"
 
@@ -278,14 +280,8 @@ void Prober::subcommand_forms() {
     monitor_served_ = served(monitor);
     // 0004 is the L CPUs' 32-character-password form of the file commands (a
     // QnU refuses it): an open of a file that does not exist tells them apart.
-    auto l_form = ask_in(codec_, FrameKind::E3, 0x1827, 0x0004, [](FieldWriter& w) {
-        w.u16(0);
-        w.u16(0);
-        w.u16(0);
-        w.u16(4);
-        w.u16(9);
-        w.raw(Bytes{'P', 'R', 'O', 'B', 'E', '.', 'N', 'O', 'F'});
-    });
+    protocol::client::FileTarget missing{false, 4, "PROBE.NOF", "", true};
+    auto l_form = ask(protocol::client::file_open(frame(codec_, FrameKind::E3), missing, false));
     l_only_subcommand_ = l_form.kind == Kind::Answer && l_form.end_code != not_supported_;
 }
 
@@ -629,6 +625,13 @@ void Prober::connections() {
         open.push_back(std::move(wire));
     }
     for (auto& w : open) w->close("counted");
+    // The port frees the connections when it has seen them closed: wait (at
+    // most the timeout) until it serves this one again, so the steps after
+    // this one are not refused for a connection it still counts.
+    auto deadline = Clock::now() + settings_.target.timeout;
+    while (!served(ask(protocol::client::read_words(frame(codec_, FrameKind::E3), at("D", 0), 1))) &&
+           Clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
     profile_["max_connections"] = count;
     fact("max_connections", std::to_string(count) + (stop == "none refused" ? " (the most tried)" : ""),
          "TCP connections opened one by one, each asked 0401 (" + stop + ")",
@@ -659,7 +662,10 @@ void Prober::timing() {
             if (fastest < 1e9) points.emplace_back(words, fastest);
             spread = std::max(spread, slowest - fastest);
         }
-        if (points.size() < 2) continue;
+        if (points.size() < 2) {
+            fact(codec == Codec::Binary ? "timing (binary)" : "timing (ASCII)", "base's", "the timed reads were not served", false);
+            continue;
+        }
         double n = static_cast<double>(points.size()), sx = 0, sy = 0, sxx = 0, sxy = 0;
         for (auto [x, y] : points) sx += x, sy += y, sxx += x * x, sxy += x * y;
         double kdt = std::max(0.0, (n * sxy - sx * sy) / (n * sxx - sx * sx));
