@@ -74,16 +74,6 @@ const DeviceSpec* sizing_spec(Area area) {
     return found;
 }
 
-std::uint32_t parse_number(const std::string& text, const std::string& what) {
-    try {
-        std::size_t used = 0;
-        auto value = std::stoul(text, &used);
-        if (used == text.size()) return static_cast<std::uint32_t>(value);
-    } catch (const std::exception&) {
-    }
-    throw UsageError("--allow-writes: '" + text + "' is not a " + what);
-}
-
 }  // namespace
 
 ScratchRanges parse_scratch_ranges(const std::string& text, devicemodel::Numbering numbering) {
@@ -114,7 +104,6 @@ ScratchRanges parse_scratch_ranges(const std::string& text, devicemodel::Numberi
             ranges.word_count = count;
         }
     }
-    (void)parse_number;
     return ranges;
 }
 
@@ -136,7 +125,6 @@ protocol::client::FrameOptions Prober::frame(Codec codec, FrameKind kind) const 
 }
 
 Observed Prober::ask(const Bytes& request) {
-    ++requests_;
     ++serial_;
     return wire_.exchange(request);
 }
@@ -553,7 +541,8 @@ void Prober::commands() {
     auto scratch_bits = settings_.scratch.bits.value_or(at("M", 0));
     // A command is unsupported when every row of it that was asked is refused
     // (a family may serve one subcommand form of a command and not another).
-    std::map<std::uint16_t, bool> any_served;
+    std::map<std::uint16_t, bool> any_served;   // rows the family serves
+    std::map<std::uint16_t, bool> served_any;   // all rows asked
     for (const auto& row : protocol::all_commands()) {
         if (row.writes()) continue;
         if (!iqr_ && row.form == DeviceForm::IQR && row.device_command()) continue;   // iqr_subcommands says
@@ -564,9 +553,22 @@ void Prober::commands() {
         bool refused_here = o.kind != Kind::Answer || o.end_code == not_supported_;
         if (refused_here) listed.push_back(hex4(row.command) + "/" + hex4(row.subcommand) + " " + reaction(o));
         if (row.served_by(family_)) any_served[row.command] |= !refused_here;
+        served_any[row.command] |= !refused_here;
         if (!refused_here && !row.served_by(family_))
             unexpected.push_back(hex4(row.command) + "/" + hex4(row.subcommand));
     }
+    // Label, file and buffer-memory support, as the rows above found it.
+    auto support = [&](const std::string& what, std::initializer_list<std::uint16_t> commands, const std::string& how) {
+        std::string seen;
+        for (auto c : commands) {
+            auto it = served_any.find(c);
+            seen += (seen.empty() ? "" : ", ") + hex4(c) + (it != served_any.end() && it->second ? " served" : " refused");
+        }
+        fact(what, seen, how);
+    };
+    support("labels", {0x041C, 0x041A}, "041C/041A of a label that does not exist: any answer but not-supported");
+    support("files", {0x1810, 0x1811, 0x1827}, "1810/1811/1827 on drive 4, a file that does not exist");
+    support("buffer memory", {0x0613, 0x0601}, "0613 of word 0, 0601 of module 03E0");
     auto refused = nlohmann::ordered_json::array();
     for (const auto& [command, served_once] : any_served)
         if (!served_once) refused.push_back(hex4(command));
@@ -593,7 +595,6 @@ void Prober::pipeline() {
     }
     wire_.close("before the burst");
     auto outcomes = wire_.burst(burst);
-    requests_ += burst.size();
     std::size_t served_count = 0;
     while (served_count < outcomes.size() && served(outcomes[served_count])) ++served_count;
     if (served_count == outcomes.size()) {
@@ -616,7 +617,7 @@ void Prober::connections() {
     for (unsigned i = 0; i < settings_.max_connections; ++i) {
         auto wire = std::make_unique<Wire>(settings_.target, settings_.silence, recorder_);
         auto o = wire->exchange(protocol::client::read_words(frame(codec_, FrameKind::E3), at("D", 0), 1));
-        ++requests_;
+        other_wires_sent_ += wire->sent();
         if (!served(o)) {
             stop = "connection " + std::to_string(i + 1) + ": " + reaction(o);
             break;

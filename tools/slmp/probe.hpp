@@ -54,11 +54,10 @@ public:
     // Runs every step; the profile JSON (with "extends" of the family's base).
     nlohmann::ordered_json run();
     const std::vector<Fact>& facts() const { return facts_; }
-    std::size_t requests() const { return requests_; }
+    std::size_t requests() const { return wire_.sent() + other_wires_sent_; }
     const std::string& base() const { return base_; }   // the built-in profile the probed one extends
 
 private:
-    struct Step;
     Observed ask(const std::vector<std::uint8_t>& request);
     Observed ask_in(protocol::Codec codec, protocol::FrameKind kind, std::uint16_t command, std::uint16_t subcommand,
                     const std::function<void(protocol::FieldWriter&)>& body);
@@ -94,7 +93,7 @@ private:
     WireRecorder* recorder_;
     std::ostream& progress_;
     Wire wire_;
-    std::size_t requests_ = 0;
+    std::size_t other_wires_sent_ = 0;   // by the connections counted
     std::uint16_t serial_ = 0;
     std::vector<Fact> facts_;
     nlohmann::ordered_json profile_ = nlohmann::ordered_json::object();

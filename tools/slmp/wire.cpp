@@ -107,6 +107,7 @@ Observed Wire::exchange(std::span<const std::uint8_t> request) {
     if (!open()) return {Kind::Close, {}, 0};
     auto start = Clock::now();
     Observed observed;
+    ++sent_;
     try {
         link_->send(request, start + target_.timeout);
         observed = receive_one(start + silence_after_);
@@ -126,6 +127,7 @@ std::vector<Observed> Wire::burst(const std::vector<std::vector<std::uint8_t>>& 
     if (!open()) return std::vector<Observed>(requests.size(), {Kind::Close, {}, 0});
     std::vector<std::uint8_t> all;
     for (const auto& r : requests) all.insert(all.end(), r.begin(), r.end());
+    sent_ += requests.size();
     auto start = Clock::now();
     try {
         link_->send(all, start + target_.timeout);

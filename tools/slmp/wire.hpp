@@ -53,6 +53,8 @@ public:
     bool open();
     void close(const std::string& why);
     std::chrono::microseconds last_elapsed() const { return elapsed_; }
+    // Requests sent (not those a connection that could not be opened never carried).
+    std::size_t sent() const { return sent_; }
     const Target& target() const { return target_; }
 
 private:
@@ -66,6 +68,7 @@ private:
     std::uint64_t connection_ = 0;
     std::vector<std::uint8_t> pending_;
     std::chrono::microseconds elapsed_{0};
+    std::size_t sent_ = 0;
 };
 
 }  // namespace slmp::cli
