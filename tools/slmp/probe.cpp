@@ -434,13 +434,13 @@ void Prober::limits() {
             fact("limits." + key, "base's", how + (found ? ": no limit below " + std::to_string(cap) : ": one point is refused"), false);
             return;
         }
-        nlohmann::ordered_json value{{"max", found->max}};
-        std::string over = found->over ? reaction(*found->over) : "none up to " + std::to_string(cap);
-        if (found->over && found->over->kind == Kind::Answer && found->over->end_code)
-            value["end_code"] = hex4(found->over->end_code);
-        else value["end_code"] = "C051";
-        limits[key] = value;
-        fact("limits." + key, std::to_string(found->max) + ", over it " + over,
+        const auto& over = *found->over;
+        if (over.kind != Kind::Answer) {   // a profile limit answers an end code; silence or a close has no key
+            fact("limits." + key, "base's", how + ": over " + std::to_string(found->max) + " the port answers " + reaction(over), false);
+            return;
+        }
+        limits[key] = {{"max", found->max}, {"end_code", hex4(over.end_code)}};
+        fact("limits." + key, std::to_string(found->max) + ", over it " + reaction(over),
              how + " (" + std::to_string(found->requests) + " requests)");
     };
     auto words = [&](Codec codec) {
@@ -501,13 +501,17 @@ void Prober::limits() {
                     }
                 });
             });
-            value[form_key] = found ? found->max : 0;
-            if (found && found->over && found->over->kind == Kind::Answer && found->over->end_code)
-                value["end_code"] = hex4(found->over->end_code);
-            shown += std::string(shown.empty() ? "" : ", ") + form_key + " " + (found ? std::to_string(found->max) : "refused") +
-                     (found && found->over ? " (over: " + reaction(*found->over) + ")" : "");
+            // A limit the one-byte count cannot pass, or one refused without an end code, is not found.
+            if (!found || !found->over || found->over->kind != Kind::Answer) {
+                fact("limits." + key, "base's", how + ", " + form_key + " form: " +
+                     (found ? "no end code up to " + std::to_string(found->max) : "one point is refused"), false);
+                return;
+            }
+            value[form_key] = found->max;
+            value["end_code"] = hex4(found->over->end_code);
+            shown += std::string(shown.empty() ? "" : ", ") + form_key + " " + std::to_string(found->max) +
+                     " (over: " + reaction(*found->over) + ")";
         }
-        if (!value.contains("end_code")) value["end_code"] = "C054";
         limits[key] = value;
         fact("limits." + key, shown, how + ", bisection of N in each form");
     };
