@@ -131,11 +131,17 @@ StrandTask<Handled> Relays::pass_on(Relay relay, std::vector<std::uint8_t> frame
                                     protocol::Peer peer) {
     // The receiving station framed it; its header again, for the data code and the timer.
     const auto scan = protocol::scan_frame(frame, protocol::Direction::Request, policy, frame.size(), protocol::FrameSet{false, true});
-    const auto codec = scan.header.codec;
-    // The receiving station took its time before it passed the request on
-    // (its timing mode held it); each relay station adds its own.
-    for (std::size_t k = 1; k < relay.hops.size(); ++k)
-        co_await asio::co_spawn(relay.hops[k]->home(), relay.hops[k]->pass_on_time(codec), use_strand);
+    // Each station on the way: its passing-on time and its scenario faults.
+    for (std::size_t k = 0; k < relay.hops.size(); ++k) {
+        auto* hop = relay.hops[k];
+        auto refused = co_await asio::co_spawn(hop->home(), hop->pass_through(frame, policy, peer, k == 0), use_strand);
+        if (!refused) continue;
+        refused->outcome.consumed = frame.size();
+        // A relay station that drops it leaves the receiving module waiting: CF71 at its timer.
+        if (refused->outcome.action != protocol::Outcome::Action::Respond && k > 0)
+            co_return co_await no_answer(*relay.hops.front(), std::move(frame), scan);
+        co_return std::move(*refused);
+    }
     auto& session = sessions_[relay.target];
     auto handled = co_await asio::co_spawn(relay.target->home(), relay.target->serve_routed(frame, policy, session, peer),
                                            use_strand);

@@ -182,10 +182,29 @@ StrandTask<Handled> Station::serve_routed(std::vector<std::uint8_t> frame, proto
     co_return handled;
 }
 
-StrandTask<> Station::pass_on_time(protocol::Codec codec) {
-    if (timing_mode_ != config::TimingMode::Model || !scan_) co_return;
-    const double ke = codec == protocol::Codec::Ascii ? timing_model_.ke_ascii_ms : timing_model_.ke_binary_ms;
-    co_await wait_on_clock(std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::duration<double, std::milli>(ke)));
+StrandTask<std::optional<Handled>> Station::pass_through(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                                         protocol::Peer peer, bool receiving) {
+    if (!receiving && timing_mode_ == config::TimingMode::Model) {
+        const bool ascii = engine_.frame(frame, policy).header.codec == protocol::Codec::Ascii;
+        const std::chrono::duration<double, std::milli> ke(ascii ? timing_model_.ke_ascii_ms : timing_model_.ke_binary_ms);
+        co_await wait_on_clock(std::chrono::duration_cast<std::chrono::milliseconds>(ke));
+    }
+    if (!scenario_.active()) co_return std::nullopt;
+    // Its faults match the request as it passes (a module reads only the header of another station's request).
+    auto request = engine_.decode(frame, policy, {}, false);
+    if (!request.complete() || !request.has_command) co_return std::nullopt;
+    scenarios::Incoming incoming{std::move(request)};
+    auto plan = scenario_.before(incoming, frame, passing_, peer);
+    if (plan.pass()) {   // a delay holds it here; the other deliveries are the target's answer's
+        if (plan.delivery.delay.count() > 0)
+            co_await wait_on_clock(std::chrono::duration_cast<std::chrono::milliseconds>(plan.delivery.delay));
+        co_return std::nullopt;
+    }
+    Handled refused;
+    refused.outcome = scenario_.answer(plan, incoming.request);
+    scenario_.after(plan, refused, frame, passing_, peer);
+    log_outcome(*log_, peer, refused.outcome);
+    co_return refused;
 }
 
 StrandTask<> Station::wait_on_clock(std::chrono::milliseconds timer) {

@@ -129,10 +129,13 @@ public:
     // remote password, which the receiving port checks).
     StrandTask<Handled> serve_routed(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
                                      std::optional<protocol::Session>& session, protocol::Peer peer);
-    // model: the time this station takes to pass a request on to the next
-    // one (its Ke for the frame's data code), on its own clock; nothing in the
-    // other modes.
-    StrandTask<> pass_on_time(protocol::Codec codec);
+    // A request this station passes on to another (Relays::pass_on), on its
+    // strand: its passing-on time (model: its Ke, on its clock; not for the
+    // receiving station, whose timing mode held the request already) and its
+    // scenario faults — a forced end code or a drop answers here instead
+    // (nullopt: passed on), a delay holds it.
+    StrandTask<std::optional<Handled>> pass_through(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                                    protocol::Peer peer, bool receiving);
     // Waits `timer` on this station's clock (a relay that got no answer).
     StrandTask<> wait_on_clock(std::chrono::milliseconds timer);
     // Whether a request is served as soon as it is whole (instant timing):
@@ -233,6 +236,7 @@ private:
     std::optional<Home> home_;      // null in a bare station
     const Router* router_ = nullptr;
     std::unique_ptr<LinkScan> link_scan_;                // null: sends no link devices
+    protocol::Session passing_;                          // the scenario faults' view of requests it passes on
     std::shared_ptr<spdlog::logger> log_ = process_logger();
     devicemodel::Cpu cpu_;
     protocol::Engine engine_;

@@ -127,7 +127,7 @@ std::vector<std::pair<std::string, Builder>> every_command() {
     add("0401 bits", [](auto& o) { return client::read_bits(o, addr("M10"), 4); });
     add("1401 iQ-R words", [=](auto& o) { return client::write_words(o, addr("D200"), words, DeviceForm::Iqr); });
     add("0401 iQ-R words", [](auto& o) { return client::read_words(o, addr("D200"), 3, DeviceForm::Iqr); });
-    add("0401 past the end", [](auto& o) { return client::read_words(o, addr("D99999999"), 1, DeviceForm::Iqr); });
+    add("0401 past the end", [](auto& o) { return client::read_words(o, addr("D65535"), 1); });
     add("1402 words", [](auto& o) {
         std::vector<client::WordWrite> w{{addr("D300"), 7}};
         std::vector<client::DwordWrite> d{{addr("D302"), 0x11223344}};
@@ -395,4 +395,29 @@ TEST_CASE("routes: a station's send range of LW is seen at the network's other s
     // A station on network 1 without a station No. has the link devices but is not linked.
     auto other = TcpClient::open(tcp_of(sim, "other"));
     CHECK(show(ask(other, read_link_word("W100"))) == show(word_answer(0)));
+}
+
+TEST_CASE("routes: a relay station's faults refuse or drop the requests it passes on", "[route][plant]") {
+    // relay refuses every 0401 with CF70 and drops every 1401; the module
+    // answers a dropped request CF71 when its monitoring timer (250 ms) runs out.
+    TempDir dir;
+    const auto faults = dir.write("relay.json", R"({"stations": "relay", "faults": [
+        {"do": "end_code", "end_code": "CF70", "match": {"command": "0401"}},
+        {"do": "no_response", "match": {"command": "1401"}}]})");
+    SimProcess sim(plant(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
+        {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "udp_port": 0, "networks": [{"number": 1, "station": 1}]},
+        {"name": "relay", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 4}, {"number": 2, "station": 1}],
+         "scenarios": [")" + faults.string() + R"("]},
+        {"name": "packer", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 2, "station": 3}]}]})"));
+    auto gw = TcpClient::open(tcp_of(sim, "gw"));
+    CHECK(show(ask(gw, hex("50 00 02 03 FF 03 00 0C 00 01 00 01 04 00 00 64 00 00 A8 01 00"))) ==
+          show(hex("D0 00 02 03 FF 03 00 0B 00 70 CF 02 03 FF 03 00 01 04 00 00")));
+    CHECK(show(ask(gw, hex("50 00 02 03 FF 03 00 0E 00 01 00 01 14 00 00 64 00 00 A8 01 00 34 12"))) ==
+          show(hex("D0 00 02 03 FF 03 00 0B 00 71 CF 02 03 FF 03 00 01 14 00 00")));
+    UdpClient udp;
+    CHECK(show(ask(udp, udp_of(sim, "gw"), hex("50 00 02 03 FF 03 00 0E 00 01 00 01 14 00 00 64 00 00 A8 01 00 34 12"))) ==
+          show(hex("D0 00 02 03 FF 03 00 0B 00 71 CF 02 03 FF 03 00 01 14 00 00")));
+    // Nothing was written: packer's own D100 is still 0.
+    auto packer = TcpClient::open(tcp_of(sim, "packer"));
+    CHECK(show(ask(packer, read_d100(Route{}))) == show(hex("D0 00 00 FF FF 03 00 04 00 00 00 00 00")));
 }
