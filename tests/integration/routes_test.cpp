@@ -14,6 +14,7 @@
 #include "protocol/client_commands.hpp"
 #include "protocol/client_files.hpp"
 #include "protocol/client_labels.hpp"
+#include "plant_ports.hpp"
 #include "sim_process.hpp"
 #include "sockets.hpp"
 
@@ -53,18 +54,6 @@ SimOptions plant(const std::string& config) {
     return options;
 }
 
-const nlohmann::json& station_in(const SimProcess& sim, const std::string& name) {
-    for (const auto& s : sim.ready()["stations"])
-        if (s["name"] == name) return s;
-    FAIL("no station " << name << " in the ready file: " << sim.ready().dump());
-    throw;
-}
-std::uint16_t tcp_of(const SimProcess& sim, const std::string& name) {
-    return station_in(sim, name)["tcp"][0].get<std::uint16_t>();
-}
-std::uint16_t udp_of(const SimProcess& sim, const std::string& name) {
-    return station_in(sim, name)["udp"][0].get<std::uint16_t>();
-}
 
 Bytes ask(TcpClient& c, const Bytes& request) {
     REQUIRE(c.send(request));
