@@ -114,8 +114,8 @@ std::vector<std::pair<std::string, Builder>> every_command() {
     add("0401 words", [](auto& o) { return client::read_words(o, addr("D100"), 3); });
     add("1401 bits", [=](auto& o) { return client::write_bits(o, addr("M10"), bits); });
     add("0401 bits", [](auto& o) { return client::read_bits(o, addr("M10"), 4); });
-    add("1401 iQ-R words", [=](auto& o) { return client::write_words(o, addr("D200"), words, DeviceForm::Iqr); });
-    add("0401 iQ-R words", [](auto& o) { return client::read_words(o, addr("D200"), 3, DeviceForm::Iqr); });
+    add("1401 iQ-R words", [=](auto& o) { return client::write_words(o, addr("D200"), words, DeviceForm::IQR); });
+    add("0401 iQ-R words", [](auto& o) { return client::read_words(o, addr("D200"), 3, DeviceForm::IQR); });
     add("0401 past the end", [](auto& o) { return client::read_words(o, addr("D65535"), 1); });
     add("1402 words", [](auto& o) {
         std::vector<client::WordWrite> w{{addr("D300"), 7}};
