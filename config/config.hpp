@@ -99,9 +99,22 @@ struct ModuleConfig {
 };
 
 // A network module whose link devices are reached as J(number)\X/Y/B/SB/W/SW.
+// With `station`, the module is on that network as that station No., so
+// requests routed through another station's module reach this CPU
+// (docs/plants.md, "Networks and routes").
 struct NetworkConfig {
     std::uint16_t number = 0;
     devicemodel::DeviceSizes sizes{};
+    std::uint8_t station = 0;   // 1-120; 0: not set (the network's link devices only)
+    bool master = false;        // the network's control/master station (routes 7D/7E)
+    // What this station sends to the others at each link scan: ranges of its
+    // LB/LW (J□\B, J□\W); by default 256 of each from (station − 1) × 256.
+    struct Range {
+        const devicemodel::DeviceSpec* spec = nullptr;   // B or W
+        std::uint32_t first = 0;
+        std::uint32_t count = 0;                          // B: a multiple of 16
+    };
+    std::vector<Range> send;
 };
 
 // CPU No.2–4 of a multi-CPU system (module I/O 03E1–03E3).

@@ -36,12 +36,41 @@ ModuleConfig module(const JsonAt& at) {
     return m;
 }
 
+// One send range, "W100-W1FF" or "B0-BFF": link devices B or W of the
+// network, B in whole words (16 points from a multiple of 16).
+NetworkConfig::Range send_range(const JsonAt& at, const devicemodel::DeviceSizes& sizes) {
+    const auto text = at.string();
+    const auto dash = text.find('-');
+    std::string error;
+    auto first = devicemodel::parse_address(text.substr(0, dash), &error);
+    auto last = dash == std::string::npos ? first : devicemodel::parse_address(text.substr(dash + 1), &error);
+    if (!first || !last || first->spec != last->spec || last->number < first->number)
+        at.fail("'" + text + "' is not a range of link devices", "write it like \"W100-W1FF\" or \"B0-BFF\"");
+    const auto area = first->spec->area;
+    if (area != Area::B && area != Area::W) at.fail("a station sends only LB and LW", "use B or W, e.g. \"W100-W1FF\"");
+    NetworkConfig::Range r{first->spec, first->number, last->number - first->number + 1};
+    if (area == Area::B && (r.first % 16 != 0 || r.count % 16 != 0))
+        at.fail("'" + text + "' is not whole words of B", "start at a multiple of 16 and send 16 points a word, e.g. \"B100-B1FF\"");
+    if (std::uint64_t{r.first} + r.count > sizes[static_cast<std::size_t>(area)])
+        at.fail("'" + text + "' runs past the network's " + std::string(devicemodel::area_name(area)) + " size",
+                "send inside its device_sizes");
+    return r;
+}
+
 // Link device sizes of a CC-Link IE Control network module unless given.
 NetworkConfig network(const JsonAt& at) {
-    at.only_keys({"number", "device_sizes"});
+    at.only_keys({"number", "station", "master", "send", "device_sizes"});
     NetworkConfig n;
     n.number = static_cast<std::uint16_t>(at["number"].unsigned_int(239));
     if (n.number == 0) at["number"].fail("network numbers start at 1", "use 1-239");
+    if (at.has("station")) {
+        n.station = static_cast<std::uint8_t>(at["station"].unsigned_int(120));
+        if (n.station == 0) at["station"].fail("station numbers start at 1", "use 1-120");
+    }
+    if (at.has("master")) {
+        n.master = at["master"].boolean();
+        if (n.master && n.station == 0) at["master"].fail("a master station needs its station No.", "add \"station\": 1-120");
+    }
     auto set = [&](Area a, std::uint32_t points) { n.sizes[static_cast<std::size_t>(a)] = points; };
     set(Area::X, 16384);
     set(Area::Y, 16384);
@@ -56,6 +85,18 @@ NetworkConfig network(const JsonAt& at) {
                 at["device_sizes"].fail("a network module has only X, Y, B, SB, W and SW", "remove the other devices");
             set(area, points);
         }
+    if (at.has("send")) {
+        if (n.station == 0) at["send"].fail("only a station with a station No. sends", "add \"station\": 1-120");
+        auto list = at["send"];
+        list.expect_array();
+        for (std::size_t i = 0; i < list.json().size(); ++i) n.send.push_back(send_range(list[i], n.sizes));
+    } else if (n.station != 0) {   // chosen default: 256 LB and 256 LW a station, in station order (docs/plants.md)
+        const std::uint32_t first = (n.station - 1u) * 256u;
+        for (const char* symbol : {"B", "W"}) {
+            const auto* spec = devicemodel::find_by_symbol(symbol);
+            if (first + 256u <= n.sizes[static_cast<std::size_t>(spec->area)]) n.send.push_back({spec, first, 256});
+        }
+    }
     return n;
 }
 
@@ -85,6 +126,11 @@ std::vector<T> list(const JsonAt& root, std::string_view key, Parse parse) {
 void parse_hardware(const JsonAt& root, ServerConfig& config) {
     config.modules = list<ModuleConfig>(root, "modules", module);
     config.networks = list<NetworkConfig>(root, "networks", network);
+    for (std::size_t i = 0; i < config.networks.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (config.networks[i].number == config.networks[j].number)
+                root["networks"][i]["number"].fail("network " + std::to_string(config.networks[i].number) + " is configured twice",
+                                                   "a station has one module on each network");
     config.cpus = list<CpuConfig>(root, "cpus", cpu);
     for (std::size_t i = 0; i < config.cpus.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)

@@ -169,6 +169,19 @@ private:
                                   "; give each station its own port (\"tcp_port\": \"20000+i\") or bind address "
                                   "(\"bind\": \"127.0.1.{i}\")");
         }
+        // A network's station Nos. and its master are one each (docs/plants.md, "Networks and routes").
+        for (const auto& n : station.server.networks) {
+            if (n.station == 0) continue;
+            const auto key = std::to_string(n.number) + "/" + std::to_string(n.station);
+            if (auto [it, fresh] = network_stations_.emplace(key, name); !fresh)
+                throw ConfigError(where + ": stations '" + it->second + "' and '" + name + "' are both station No. " +
+                                  std::to_string(n.station) + " of network " + std::to_string(n.number) +
+                                  "; give each station of a network its own \"station\"");
+            if (!n.master) continue;
+            if (auto [it, fresh] = masters_.emplace(n.number, name); !fresh)
+                throw ConfigError(where + ": stations '" + it->second + "' and '" + name + "' are both the master of network " +
+                                  std::to_string(n.number) + "; mark one with \"master\": true");
+        }
     }
 
     std::string source_;
@@ -177,6 +190,8 @@ private:
     std::vector<StationConfig> stations_;
     std::map<std::string, std::string> names_;
     std::map<std::string, std::string> ports_;   // "bind TCP port" -> station name
+    std::map<std::string, std::string> network_stations_;   // "network/station" -> station name
+    std::map<std::uint16_t, std::string> masters_;          // network -> its master station's name
 };
 
 

@@ -26,6 +26,13 @@ EndCode check_module_io(const Route& route, const CpuSet& cpus, std::size_t& tar
     return cpus[target] ? EndCode::Ok : EndCode::RouteNotCpu;
 }
 
+// A routed request: the plant's router resolved its network and station to
+// this station; a multidrop station behind it is not served (4A02).
+EndCode check_routed(const Route& route, const CpuSet& cpus, std::size_t& target) {
+    if (route.multidrop != 0x00) return EndCode::RouteStationNotFound;
+    return check_module_io(route, cpus, target);
+}
+
 EndCode check_route(const FrameHeader& header, StationNumbers own, const CpuSet& cpus, std::size_t& target) {
     const auto& route = header.route;
     // Station-number-extended frame (§3.1.6): station 7C defers to the extended
@@ -67,7 +74,7 @@ FrameScan Engine::frame(std::span<const std::uint8_t> input, DataCodePolicy poli
                       FrameSet{port.frame_1e, port.station_extended_frame});
 }
 
-Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy policy, StationNumbers own) const {
+Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy policy, StationNumbers own, bool routed) const {
     Request request;
     const auto scan = frame(input, policy);
     request.frame = frame_status(scan.status);
@@ -103,9 +110,15 @@ Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy polic
     }
     request.has_command = true;
     request.data = body.subspan(body.size() - in.remaining());
-    request.route_error = check_route(header, own, cpus_, request.target);
+    request.route_error = routed ? check_routed(header.route, cpus_, request.target) : check_route(header, own, cpus_, request.target);
     request.spec = find_command(request.command, request.subcommand);
-    if (request.spec && request.spec->decode) {
+    // A module's port passes another station's request on undecoded: that
+    // station's CPU decodes it (the 7C extended station Nos. have no router).
+    const bool other_station =
+        request.route_error == EndCode::RouteNetworkNotFound || request.route_error == EndCode::RouteStationNotFound;
+    request.elsewhere = ports_[0].relays && !routed && other_station &&
+                        !(header.kind == FrameKind::Ext && header.route.station == 0x7C);
+    if (request.spec && request.spec->decode && !request.elsewhere) {
         // The target CPU's limits apply; a request with a bad route is refused
         // before its operands matter, but the scenario hook still sees them.
         const auto& port = ports_[request.route_error == EndCode::Ok ? request.target : 0];

@@ -13,6 +13,7 @@ std::string_view describe(EndCode code) {
         case EndCode::DeviceOutOfRange: return "device number or span outside the configured device size";
         case EndCode::RouteNetworkNotFound: return "the requested network number cannot be reached from this port";
         case EndCode::RouteStationNotFound: return "the requested station cannot be reached from this port";
+        case EndCode::RouteTooManyRelays: return "the route to the requested station passes more than 7 relay stations";
         case EndCode::RouteNotCpu: return "the requested module I/O number is not a CPU of this station";
         case EndCode::AsciiConversion: return "ASCII data that cannot be converted to binary";
         case EndCode::WordPointsOverLimit: return "word point count out of range";

@@ -16,6 +16,7 @@ enum class EndCode : std::uint16_t {
     DeviceOutOfRange = 0x4031,          // iQ-R: start or span past the configured size
     RouteNetworkNotFound = 0x4A01,      // request for another network (chosen, see docs/end-codes.md)
     RouteStationNotFound = 0x4A02,      // request for another station on network 0 (chosen)
+    RouteTooManyRelays = 0x4A03,        // a route through more than 7 relay stations (chosen)
     RouteNotCpu = 0x4B02,               // module I/O that is not this CPU (chosen)
     AsciiConversion = 0xC050,           // ASCII data that is not hexadecimal
     WordPointsOverLimit = 0xC051,

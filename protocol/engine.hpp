@@ -51,6 +51,9 @@ struct Session {
     // The port's own network and station numbers (set by the transport from
     // the port's configuration); requests addressed to them are served.
     StationNumbers own{};
+    // A session at the station a route leads to (station/router.hpp): its
+    // requests were routed here, their network/station already resolved.
+    bool routed = false;
     // Commands per connection (SLMP Reference Manual §3.3), set by the transport before each
     // request: how many requests of the same burst came before this one and
     // are not answered yet, and how many connections the port has open.
@@ -108,8 +111,12 @@ public:
     // the clock asks this, so the request is still decoded once).
     FrameScan frame(std::span<const std::uint8_t> input, DataCodePolicy policy) const;
     // Decodes the frame at the start of `input` (at most one); touches no memory.
-    // `own`: the port's network/station numbers, served like 00/FF.
-    Request decode(std::span<const std::uint8_t> input, DataCodePolicy policy, StationNumbers own = {}) const;
+    // `own`: the port's network/station numbers, served like 00/FF. `routed`:
+    // the plant's router brought the request here through a module (its
+    // network/station name this station), so only module I/O and multidrop
+    // are checked.
+    Request decode(std::span<const std::uint8_t> input, DataCodePolicy policy, StationNumbers own = {},
+                   bool routed = false) const;
     // Serves a decoded request: the port's refusals, route, password, then the handler.
     Outcome execute(const Request& request, Session& session);
     // decode + execute.

@@ -45,6 +45,10 @@ struct PortProfile {
     // The station-number-extended frame (68 00; CC-Link IE TSN modules): served,
     // or not a frame at all (skipped unanswered, as a port without it does).
     bool station_extended_frame = false;
+    // A network/Ethernet module's port passes a request that names another
+    // network/station on (docs/plants.md, "Networks and routes"); a CPU's
+    // built-in port reaches only its own station (4A01/4A02).
+    bool relays = false;
     // Commands per connection (SLMP Reference Manual §3.3): 1 + pipeline_buffer ÷ connections
     // requests may wait in the port's receive buffer; 0 = no limit. Requests
     // beyond it get `pipeline_over_limit` (docs/end-codes.md: CEE0).

@@ -74,10 +74,18 @@ Server::Server(const config::PlantConfig& plant)
         served.push_back({s.settings.server.name, s.station, s.home,
                           control::PortList{s.settings.server.bind, s.listeners.tcp_ports(), s.listeners.udp_ports(), 0}});
     }
+    join_networks();
     take_initial_snapshots();
     if (first().http.enabled)
         http_ = std::make_unique<control::HttpServer>(main_, served, first().http,
                                                       bind_address(http_bind()), plant_.plant);
+}
+
+// The stations' network modules make one router (docs/plants.md, "Networks
+// and routes"); every station reads it, no one changes it after this.
+void Server::join_networks() {
+    for (auto& s : stations_) router_.add(s->station, s->settings.server.name, s->settings.server.networks);
+    for (auto& s : stations_) s->station.join(router_);
 }
 
 // "http": {"bind"}, else the stations' bind address when they share one, else

@@ -11,6 +11,7 @@
 #include "config/plant_config.hpp"
 #include "control/http/http_server.hpp"
 #include "server/listeners.hpp"
+#include "station/router.hpp"
 #include "station/station.hpp"
 
 namespace slmp::server {
@@ -27,6 +28,7 @@ public:
     void run();
 
 private:
+    void join_networks();
     // One station on its home strand: everything it does (its listeners,
     // scan, scenarios, the serving of its requests, the HTTP requests for it)
     // runs there; its TCP connections read and write on strands of their own.
@@ -51,6 +53,7 @@ private:
     boost::asio::io_context io_;
     station::Home main_;                  // the HTTP server and the signals
     std::vector<std::unique_ptr<Served>> stations_;
+    station::Router router_;   // the plant's networks: read-only once the stations joined it
     std::unique_ptr<control::HttpServer> http_;   // null with --no-http; destroyed before the stations
     boost::asio::signal_set signals_;
     boost::asio::signal_set snapshot_signal_;

@@ -39,8 +39,24 @@ StrandTask<> Inbox::serve() {
     served_.responses.clear();   // keeps its capacity
     served_ = {std::move(served_.responses)};
     waiting_ = false;
+    if (relay_) return serve_relayed();
     if (at_once_) return on_home(home_, [this] { serve_at_once(); }, use_strand);
     return serve_timed();
+}
+
+// The answers before it have left (waiting_ made the transport write them
+// first); the connection waits for this one as for its own CPU's.
+StrandTask<> Inbox::serve_relayed() {
+    auto pending = std::move(*relay_);
+    relay_.reset();
+    auto handled = co_await relays_.pass_on(std::move(pending.relay), pending.frame, policy_, peer_);
+    handled.outcome.consumed = pending.frame.size();
+    const bool go_on = take(std::move(handled), pending.frame, true);
+    if (go_on && !bytes_.empty()) {   // the frames behind it
+        if (at_once_) co_await on_home(home_, [this] { serve_at_once(); }, use_strand);
+        else co_await serve_timed();
+    }
+    served_.consumed_a_frame = true;
 }
 
 // On the station's strand; the connection waits for it meanwhile, so its bytes are this step's.
@@ -63,6 +79,12 @@ void Inbox::begin_frames() {
 
 bool Inbox::take(Handled handled, std::span<const std::uint8_t> frame, bool owned) {
     auto& outcome = handled.outcome;
+    if (handled.relay) {   // another station serves it: serve() carries it there next (serve_relayed)
+        relay_ = PendingRelay{std::move(*handled.relay), std::vector<std::uint8_t>(frame.begin(), frame.begin() + static_cast<std::ptrdiff_t>(outcome.consumed))};
+        if (!owned) consumed_ += outcome.consumed;
+        waiting_ = true;
+        return false;
+    }
     if (outcome.action == Outcome::Action::NeedMore) return false;
     if (outcome.command != 0) last_shape_ = request_shape(frame);
     if (!owned) consumed_ += outcome.consumed;

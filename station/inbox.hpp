@@ -116,6 +116,9 @@ private:
     bool take(Handled handled, std::span<const std::uint8_t> frame, bool owned);
     void serve_at_once();
     StrandTask<> serve_timed();      // end_of_scan and model: hold_for_clock(), then what it served leaves bytes_
+    // A frame for another station (take() kept it in relay_): its trip and
+    // answer, then the frames after it.
+    StrandTask<> serve_relayed();
     StrandTask<> hold_for_clock();
     // One wait on the clock (ScanLoop::until_end_or) while the feed is read.
     StrandTask<> wait(std::optional<std::uint64_t> seen, std::optional<TimePoint> at);
@@ -143,6 +146,12 @@ private:
     Served served_;
     bool waiting_ = false;
     std::optional<Ticket> held_;   // model: a request whose time has not come
+    struct PendingRelay {
+        Relay relay;
+        std::vector<std::uint8_t> frame;
+    };
+    std::optional<PendingRelay> relay_;   // a frame that waits for its trip (serve_relayed)
+    Relays relays_;                       // this connection's sessions at the stations routes reach
     RequestShape last_shape_;
 };
 

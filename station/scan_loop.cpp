@@ -102,7 +102,7 @@ void ScanLoop::scan_once() {
     ++scans_;
     last_end_ = now;
     ends_[scans_ % kEndsKept] = now;
-    if (after_scan_) after_scan_(now);
+    for (const auto& callback : after_scan_) callback(now);
     if (!waiters_->empty()) wake_waiters();
 }
 

@@ -33,8 +33,10 @@ public:
 
     void start();
     void stop();
-    // Called after every scan with the scan's time (the scenarios' clock).
-    void after_scan(std::function<void(std::chrono::steady_clock::time_point)> callback) { after_scan_ = std::move(callback); }
+    // Called after every scan with the scan's time (the scenarios' clock, the link scan), in the order added.
+    void after_scan(std::function<void(std::chrono::steady_clock::time_point)> callback) {
+        after_scan_.push_back(std::move(callback));
+    }
     // CPU No.1's program: executed in every scan before END processing, its
     // timers given the scan's time after it (null: none; docs/program.md).
     void run_program(CpuProgram* program) { program_ = program; }
@@ -88,7 +90,7 @@ private:
     // Shared with each waiting coroutine, which removes itself also when it is
     // destroyed after the loop (at shutdown).
     std::shared_ptr<Waiters> waiters_ = std::make_shared<Waiters>();
-    std::function<void(std::chrono::steady_clock::time_point)> after_scan_;
+    std::vector<std::function<void(std::chrono::steady_clock::time_point)>> after_scan_;
     CpuProgram* program_ = nullptr;
 };
 

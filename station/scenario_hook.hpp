@@ -25,6 +25,7 @@
 #include "scenarios/runner.hpp"
 #include "scenarios/runner_set.hpp"
 #include "station/activity.hpp"
+#include "station/router.hpp"
 
 namespace slmp::station {
 
@@ -33,6 +34,9 @@ struct Handled {
     protocol::Outcome outcome;
     scenarios::Delivery delivery;   // how to send outcome.response
     bool reset = false;             // close with RST (SO_LINGER 0) instead of FIN
+    // Not served here: a module's port passes the frame of outcome.consumed
+    // bytes on to another station (station/router.hpp; Relays::pass_on).
+    std::optional<Relay> relay;
 };
 
 class ScenarioHook : public ActivityObserver {

@@ -16,6 +16,8 @@
 #include "scenarios/loader.hpp"
 #include "station/cpu_program.hpp"
 #include "station/drive_state.hpp"
+#include "station/inbox.hpp"
+#include "station/link_scan.hpp"
 #include "station/log_outcome.hpp"
 #include "station/persistence.hpp"
 #include "station/response_timing.hpp"
@@ -33,6 +35,7 @@ Station::Station(config::Profile profile, protocol::EngineOptions options)
 
 Station::Station(const station::Home& home, const config::ServerConfig& config)
     : Station(config::resolve_profile(config), protocol::EngineOptions{config.max_request_bytes}) {
+    home_ = home;
     // The scenario files' addresses follow this CPU (FX5: X/Y in octal).
     devicemodel::NumberingScope numbering(cpu_.profile().numbering);
     config_ = config;
@@ -114,11 +117,100 @@ protocol::Session Station::new_session(const config::PortConfig& port) {
 
 Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
                         const protocol::Peer& peer, const Service* service) {
-    return serve(engine_.decode(input, policy, session.own), input, session, peer, service);
+    auto request = engine_.decode(input, policy, session.own, session.routed);
+    if (auto relayed = route(request, input, policy)) return std::move(*relayed);
+    return serve(std::move(request), input, session, peer, service);
 }
 
 Handled Station::handle(Ticket& ticket, protocol::Session& session, const protocol::Peer& peer) {
+    if (auto relayed = route(ticket.request, ticket.bytes, ticket.policy)) return std::move(*relayed);
     return serve(std::move(ticket.request), ticket.bytes, session, peer, ticket.service ? &*ticket.service : nullptr);
+}
+
+void Station::join(const Router& router) {
+    router_ = &router;
+    if (!scan_) return;
+    auto link = std::make_unique<LinkScan>(*this, router, config_.networks);
+    if (link->empty()) return;
+    link_scan_ = std::move(link);
+    scan_->after_scan([this](std::chrono::steady_clock::time_point) { link_scan_->scanned(); });
+}
+
+// docs/plants.md, "Networks and routes".
+std::optional<Handled> Station::route(protocol::Request& request, std::span<const std::uint8_t> input,
+                                      protocol::DataCodePolicy policy) {
+    if (!request.elsewhere || !router_) return std::nullopt;
+    const auto& route = request.header.route;
+    auto found = router_->find(*this, route.network, route.station);
+    if (found.error != protocol::EndCode::Ok) {
+        request.route_error = found.error;
+        request.elsewhere = false;
+        return std::nullopt;
+    }
+    if (found.relay.target == this) {   // this station by its network/station numbers
+        request = engine_.decode(input, policy, {}, true);
+        return std::nullopt;
+    }
+    Handled relayed;
+    relayed.outcome.consumed = request.size;
+    relayed.outcome.command = request.command;
+    relayed.outcome.subcommand = request.subcommand;
+    relayed.relay = std::move(found.relay);
+    log_->debug("request {:04X}/{:04X} for network {:02X} station {:02X}: passed on", request.command, request.subcommand,
+                route.network, route.station);
+    return relayed;
+}
+
+StrandTask<Handled> Station::serve_routed(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                          std::optional<protocol::Session>& session, protocol::Peer peer) {
+    if (!session) {
+        config::PortConfig port;
+        port.remote_password = false;   // the receiving port checked it (docs/plants.md)
+        session = new_session(port);
+        session->routed = true;
+    }
+    Handled handled;
+    if (serves_at_once()) {
+        handled = handle(frame, policy, *session, peer);
+    } else {
+        HeldDatagram held(*this, frame, policy, *session);
+        if (co_await held.wait()) handled = held.serve(*session, peer);
+        else handled.outcome.action = Outcome::Action::Silent;   // the station stopped meanwhile
+    }
+    // A Remote RESET through a route restarts this CPU; the route gets no answer.
+    if (handled.outcome.action == Outcome::Action::Restart) restart();
+    co_return handled;
+}
+
+StrandTask<std::optional<Handled>> Station::pass_through(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                                         protocol::Peer peer, bool receiving) {
+    if (!receiving && timing_mode_ == config::TimingMode::Model) {
+        const bool ascii = engine_.frame(frame, policy).header.codec == protocol::Codec::Ascii;
+        const std::chrono::duration<double, std::milli> ke(ascii ? timing_model_.ke_ascii_ms : timing_model_.ke_binary_ms);
+        co_await wait_on_clock(std::chrono::duration_cast<std::chrono::milliseconds>(ke));
+    }
+    if (!scenario_.active()) co_return std::nullopt;
+    // Its faults match the request as it passes (a module reads only the header of another station's request).
+    auto request = engine_.decode(frame, policy, {}, false);
+    if (!request.complete() || !request.has_command) co_return std::nullopt;
+    scenarios::Incoming incoming{std::move(request)};
+    auto plan = scenario_.before(incoming, frame, passing_, peer);
+    if (plan.pass()) {   // a delay holds it here; the other deliveries are the target's answer's
+        if (plan.delivery.delay.count() > 0)
+            co_await wait_on_clock(std::chrono::duration_cast<std::chrono::milliseconds>(plan.delivery.delay));
+        co_return std::nullopt;
+    }
+    Handled refused;
+    refused.outcome = scenario_.answer(plan, incoming.request);
+    scenario_.after(plan, refused, frame, passing_, peer);
+    log_outcome(*log_, peer, refused.outcome);
+    co_return refused;
+}
+
+StrandTask<> Station::wait_on_clock(std::chrono::milliseconds timer) {
+    if (!scan_) co_return;
+    const auto until = scan_->clock().now() + timer;
+    while (scan_->clock().now() < until && !scan_->stopped()) co_await scan_->until_end_or(std::nullopt, until);
 }
 
 Handled Station::serve(protocol::Request request, std::span<const std::uint8_t> input, protocol::Session& session,
@@ -273,7 +365,8 @@ Ticket Station::schedule(std::vector<std::uint8_t> frame, protocol::DataCodePoli
                          std::chrono::steady_clock::time_point arrival) {
     Ticket ticket;
     ticket.bytes = std::move(frame);
-    ticket.request = engine_.decode(ticket.bytes, policy, session.own);
+    ticket.policy = policy;
+    ticket.request = engine_.decode(ticket.bytes, policy, session.own, session.routed);
     const auto& request = ticket.request;
     if (!timing_ || !scan_ || !request.complete() || !request.has_command) return ticket;
     const auto& clock = scan_->clock();
@@ -282,7 +375,8 @@ Ticket Station::schedule(std::vector<std::uint8_t> frame, protocol::DataCodePoli
                                            : std::chrono::duration_cast<microseconds>(scan_->period() * clock.speed());
     const auto next_end = scan_->last_end() + cpu_period;
     const auto scan_wait = next_end > arrival ? std::chrono::duration_cast<microseconds>(next_end - arrival) : microseconds{0};
-    const auto modelled = timing_->modelled(request, scan_wait);
+    // A request a module passes on waits for no END here: its time is the passing on (docs/timing.md).
+    const auto modelled = timing_->modelled(request, request.elsewhere ? microseconds{0} : scan_wait);
     const auto timer = ResponseTiming::monitoring_timer(request, ticket.bytes);
     // The port gives up when the timer runs out first (docs/timing.md).
     if (timer.count() > 0 && modelled > timer) ticket.service = Service{arrival + timer, true, timer};

@@ -30,6 +30,7 @@ namespace slmp::frontends { class Unit; }
 namespace slmp::station {
 
 class CpuProgram;
+class LinkScan;
 class DriveState;
 class Persistence;
 class ResponseTiming;
@@ -59,6 +60,7 @@ struct Queued {
 // points into `bytes`, whose buffer moves with it.
 struct Ticket {
     std::vector<std::uint8_t> bytes;
+    protocol::DataCodePolicy policy = protocol::DataCodePolicy::Auto;
     protocol::Request request;
     std::optional<Service> service;   // nullopt: served at once (no command to model)
 
@@ -112,6 +114,30 @@ public:
     // next jitter value, so call it in arrival order.
     Ticket schedule(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy, const protocol::Session& session,
                     std::chrono::steady_clock::time_point arrival);
+    // A plant's networks (station/router.hpp): a request naming another
+    // station on a module's port (the profile's "relays") goes where the
+    // router says. Set before the io_context runs; without it such a request
+    // gets 4A01/4A02 as on a lone station.
+    // Its link scan starts sending its LB/LW (station/link_scan.hpp).
+    void join(const Router& router);
+    const Router* router() const { return router_; }
+    // Its home strand (a bare station has none: no relays reach it).
+    const Home& home() const { return *home_; }
+    // A request a route brought here (Relays::pass_on), on this station's
+    // strand: served in this station's timing mode with `session`, this
+    // connection's session here (made on first use: routed, without the
+    // remote password, which the receiving port checks).
+    StrandTask<Handled> serve_routed(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                     std::optional<protocol::Session>& session, protocol::Peer peer);
+    // A request this station passes on to another (Relays::pass_on), on its
+    // strand: its passing-on time (model: its Ke, on its clock; not for the
+    // receiving station, whose timing mode held the request already) and its
+    // scenario faults — a forced end code or a drop answers here instead
+    // (nullopt: passed on), a delay holds it.
+    StrandTask<std::optional<Handled>> pass_through(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                                    protocol::Peer peer, bool receiving);
+    // Waits `timer` on this station's clock (a relay that got no answer).
+    StrandTask<> wait_on_clock(std::chrono::milliseconds timer);
     // Whether a request is served as soon as it is whole (instant timing):
     // then a transport may serve on its own strand and skip the clock.
     bool serves_at_once() const { return !scan_ || timing_mode_ == config::TimingMode::Instant; }
@@ -196,11 +222,21 @@ private:
     std::vector<devicemodel::Cpu*> all_cpus();
     // The monitoring timer's answer: CF71 (1E: 60), nothing executed.
     static protocol::Outcome timed_out(const protocol::Request& request, std::chrono::milliseconds timer);
+    // A request for another station (Request::elsewhere): its answer when the
+    // router finds no way (the request's route_error becomes the router's
+    // code) or finds this station (decoded again, as routed here); a Handled
+    // with `relay` when another station serves it.
+    std::optional<Handled> route(protocol::Request& request, std::span<const std::uint8_t> input,
+                                 protocol::DataCodePolicy policy);
     // handle()'s body, for a request decoded from `input` (once).
     Handled serve(protocol::Request request, std::span<const std::uint8_t> input, protocol::Session& session,
                   const protocol::Peer& peer, const Service* service);
 
     config::ServerConfig config_;   // with the scenarios' initial state joined
+    std::optional<Home> home_;      // null in a bare station
+    const Router* router_ = nullptr;
+    std::unique_ptr<LinkScan> link_scan_;                // null: sends no link devices
+    protocol::Session passing_;                          // the scenario faults' view of requests it passes on
     std::shared_ptr<spdlog::logger> log_ = process_logger();
     devicemodel::Cpu cpu_;
     protocol::Engine engine_;

@@ -11,6 +11,7 @@
 #include "cli_support.hpp"
 #include "frames.hpp"
 #include "http_client.hpp"
+#include "plant_ports.hpp"
 #include "sim_process.hpp"
 #include "sockets.hpp"
 
@@ -34,17 +35,6 @@ Bytes ask(TcpClient& client, const Bytes& request) {
     std::string why;
     REQUIRE(client.response(&frame, kReplyTimeout, &why));
     return frame;
-}
-
-const nlohmann::json& station_in(const SimProcess& sim, const std::string& name) {
-    for (const auto& s : sim.ready()["stations"])
-        if (s["name"] == name) return s;
-    FAIL("no station " << name << " in the ready file: " << sim.ready().dump());
-    throw;
-}
-
-std::uint16_t tcp_of(const SimProcess& sim, const std::string& name) {
-    return station_in(sim, name)["tcp"][0].get<std::uint16_t>();
 }
 
 // A port free on 127.0.1.1 now, for stations that share one port on many addresses.
@@ -258,7 +248,7 @@ TEST_CASE("plant: a scenario on a group of stations, all or nothing, and stopped
 }
 
 TEST_CASE("plant: the shipped example plants check out", "[plant]") {
-    for (const char* file : {"press-line.json", "one-port-many-addresses.json"}) {
+    for (const char* file : {"press-line.json", "one-port-many-addresses.json", "line-networks.json"}) {
         auto path = std::filesystem::path(SLMP_SOURCE_DIR) / "examples/plants" / file;
         auto result = run_sim({"--check-config", path.string()}, std::chrono::seconds(60));
         INFO(file << ": " << result.err);

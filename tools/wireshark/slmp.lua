@@ -125,6 +125,7 @@ local END_CODES = {
     [0x414A] = "the extended-specification target is protected or not supported",
     [0x4A01] = "the requested network number cannot be reached from this port",
     [0x4A02] = "the requested station cannot be reached from this port",
+    [0x4A03] = "the route to the requested station passes more than 7 relay stations",
     [0x4B02] = "the requested module I/O number is not a CPU of this station",
     [0xC050] = "ASCII data that cannot be converted to binary",
     [0xC051] = "word point count out of range",

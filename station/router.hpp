@@ -1,0 +1,86 @@
+// The plant's networks (docs/plants.md, "Networks and routes"): which station
+// is which station No. on which network, and through which relay stations a
+// module's port reaches another station. Built once before the io_context
+// runs and read-only afterwards, so every station's strand reads it without a
+// lock. The relay itself (Relays) carries a request to the target station's
+// strand, has it served there and brings the answer back.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "station/asio.hpp"
+
+#include "config/config.hpp"
+#include "protocol/end_code.hpp"
+#include "protocol/engine.hpp"
+#include "protocol/peer.hpp"
+
+namespace slmp::station {
+
+class Station;
+struct Handled;
+
+// Where a request a module's port received goes: the station that serves it
+// and the stations that pass it on, the receiving one first.
+struct Relay {
+    Station* target = nullptr;
+    std::vector<Station*> hops;   // the receiving station, then each relay station
+};
+
+class Router {
+public:
+    // `station` with its network modules (the "networks" entries with a
+    // station No.), as the plant's configuration checked them.
+    void add(Station& station, const std::string& name, const std::vector<config::NetworkConfig>& networks);
+
+    struct Found {
+        protocol::EndCode error = protocol::EndCode::Ok;   // 4A01, 4A02, 4A03 (docs/end-codes.md)
+        Relay relay;   // target == &from: the receiving station itself
+    };
+    // The station a request that reached `from` names with `network`/`station`
+    // (§3.1.3: 7D the configured master, 7E the current one), and the relay
+    // stations on the shortest way there: at most 7.
+    Found find(Station& from, std::uint8_t network, std::uint8_t station) const;
+
+    // For GET /api/stations: each network's stations (No., name, master).
+    struct Member {
+        Station* station = nullptr;
+        std::string name;
+        std::uint8_t number = 0;
+        bool master = false;
+    };
+    const std::map<std::uint16_t, std::vector<Member>>& networks() const { return networks_; }
+
+    static constexpr std::size_t kMaxRelayStations = 7;   // 8 networks in a route (SLMP Reference Manual §2.3)
+
+private:
+    const Member* member(std::uint16_t network, std::uint8_t station) const;
+
+    std::map<std::uint16_t, std::vector<Member>> networks_;
+    std::map<const Station*, std::vector<std::uint16_t>> modules_;   // the networks each station is on
+};
+
+// One connection's (or UDP port's) requests that a route takes to other
+// stations: the protocol session it has at each of them (remote password,
+// monitor registration, file locks are per connection there too), and the
+// trip itself. Lives with the connection; each session is touched only on
+// its station's strand, while the connection waits for the answer.
+class Relays {
+public:
+    // Carries `frame` through relay.hops (each adds its passing-on time in the
+    // model timing mode) to relay.target, which serves it in its own timing
+    // mode; resumes the caller on its own strand with the answer. A target
+    // that does not answer gets the monitoring timer's CF71 from the port.
+    StrandTask<Handled> pass_on(Relay relay, std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                protocol::Peer peer);
+
+private:
+    std::map<const Station*, std::optional<protocol::Session>> sessions_;
+};
+
+}  // namespace slmp::station
