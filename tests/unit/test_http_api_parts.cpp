@@ -17,7 +17,7 @@ using namespace slmp::station;
 using namespace slmp::control;
 
 TEST_CASE("router: captures, query parameters, 404 and 405", "[http]") {
-    Router router;
+    slmp::control::Router router;
     router.add(Verb::get, "/api/devices/{address}", {"count"}, [](const ApiRequest& r) {
         return json_reply({{"address", r.captures.at(0)}, {"count", r.param("count") ? *r.param("count") : "-"}});
     });
