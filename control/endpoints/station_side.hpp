@@ -14,6 +14,7 @@
 
 #include "station/asio.hpp"
 
+#include "config/plant_config.hpp"
 #include "control/endpoints/api.hpp"
 #include "control/http/router.hpp"
 #include "control/observers/device_waits.hpp"
@@ -57,6 +58,8 @@ struct Plant {
     std::vector<std::unique_ptr<StationSide>> stations;   // the first answers the routes without /api/stations/{name}
     bool named = false;                                    // a plant: station names in routes, metrics, lists
     std::atomic<bool> ready{false};                        // every station started (GET /readyz)
+    const config::ShardLayout* layout = nullptr;           // every station of the plant file and its shard (GET /api/plant)
+    bool metrics_by_profile = false;                       // GET /metrics sums the stations of each profile
 
     StationSide* find(std::string_view name);
 };
