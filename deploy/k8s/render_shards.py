@@ -17,7 +17,8 @@ Resources are sized from measurements (docs/plants.md, "Shards"): memory
 request = BASE + PER_STATION x the largest shard's stations (the idle RSS
 measured with scripts/plant-memory.py, rounded up), limit = that plus
 WRITTEN_PER_STATION for every station (room for each station's memory being
-written); CPU request and limit = the file's "threads" cores.
+written); CPU request = CPU_MILLI_PER_STATION x the largest shard's stations
+(the idle plant's measured CPU), limit = the file's "threads" cores.
 
 The shard of each station is computed here exactly as slmp-sim computes it
 (config/shard.cpp: rendezvous hashing of the name), so the generator knows the
@@ -40,6 +41,10 @@ import sys
 BASE_MIB = 64                 # the process without stations, rounded up
 PER_STATION_KIB = 64          # idle RSS a station (measured 50-52 KiB)
 WRITTEN_PER_STATION_KIB = 1024  # a station whose D, W, R, ZR, M, B were all written (measured 904 KiB)
+# Idle CPU of a station's scan loop: 37-45 % of a core per 1000 stations on main
+# (2026-12-04), before idle stations stop ticking (issue 33); lower it then.
+CPU_MILLI_PER_STATION = 0.5
+MIN_CPU_MILLI = 100
 HTTP_PORT = 8080
 MASK = (1 << 64) - 1
 
@@ -103,6 +108,7 @@ def render(plant, name, namespace, image):
     largest = max(sizes)
     memory_request = BASE_MIB + (largest * PER_STATION_KIB + 1023) // 1024
     memory_limit = memory_request + (largest * WRITTEN_PER_STATION_KIB + 1023) // 1024
+    cpu_request = max(MIN_CPU_MILLI, round(largest * CPU_MILLI_PER_STATION))
     plant = dict(plant)
     domain = f".{namespace}.svc" if namespace else ""
     plant.setdefault("shard_host", f"{name}-{{shard}}.{name}{domain}")
@@ -121,7 +127,7 @@ def render(plant, name, namespace, image):
         "ports": [{"name": "http", "containerPort": http_port, "protocol": "TCP"}],
         "livenessProbe": {"httpGet": {"path": "/healthz", "port": "http"}, "periodSeconds": 10, "failureThreshold": 3},
         "readinessProbe": {"httpGet": {"path": "/readyz", "port": "http"}, "periodSeconds": 2, "failureThreshold": 3},
-        "resources": {"requests": {"cpu": str(threads), "memory": f"{memory_request}Mi"},
+        "resources": {"requests": {"cpu": f"{cpu_request}m", "memory": f"{memory_request}Mi"},
                       "limits": {"cpu": str(threads), "memory": f"{memory_limit}Mi"}},
         "securityContext": {"allowPrivilegeEscalation": False, "readOnlyRootFilesystem": True,
                             "capabilities": {"drop": ["ALL"]}},
