@@ -1,6 +1,8 @@
 // The plant's own endpoints (docs/plants.md): health, the station list (a
 // page at a time), the shards' map of the plant, and one /metrics for every
 // station (or every profile). Each station is read on its own thread.
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <optional>
 
@@ -42,6 +44,11 @@ std::size_t count_param(const ApiRequest& request, const std::string& name, std:
     if (error != std::errc() || end != text->data() + text->size())
         throw ApiError{Status::bad_request, name + "=" + *text + ": give a whole number"};
     return value;
+}
+
+bool contains_any_case(std::string_view name, std::string_view text) {
+    auto lower = [](unsigned char ch) { return std::tolower(ch); };
+    return std::ranges::search(name, text, {}, lower, lower).begin() != name.end() || text.empty();
 }
 
 // One station of the plant file: its shard and where a client reaches it.
@@ -104,12 +111,11 @@ void add_plant_endpoints(Router& router, Plant& plant) {
         std::vector<StationSide*> page;
         std::size_t matching = 0;
         for (auto& side : plant.stations)
-            if (side->name.find(filter) != std::string::npos && matching++ >= offset && page.size() < limit)
+            if (contains_any_case(side->name, filter) && matching++ >= offset && page.size() < limit)
                 page.push_back(side.get());
         return deferred([page, matching]() -> boost::asio::awaitable<Reply> {
-            auto list = json::array();
-            for (auto* side : page) list.push_back(co_await on_station(*side, [side] { return summary(*side); }));
-            auto reply = json_reply(list);
+            auto lines = co_await on_stations(page, [](StationSide& side) { return summary(side); });
+            auto reply = json_reply(json(std::move(lines)));
             reply.headers.emplace_back("X-Total-Count", std::to_string(matching));
             co_return reply;
         });
@@ -196,11 +202,11 @@ void add_plant_endpoints(Router& router, Plant& plant) {
             by_profile = *by == "profile";
         }
         return deferred([&plant, by_profile]() -> boost::asio::awaitable<Reply> {
-            std::vector<std::pair<std::string, std::string>> texts;
-            for (auto& side : plant.stations)
-                texts.push_back(co_await on_station(*side, [&side, by_profile] {
-                    return std::pair{by_profile ? side->station.cpu().profile().name : side->name, side->metrics.render()};
-                }));
+            std::vector<StationSide*> all;
+            for (auto& side : plant.stations) all.push_back(side.get());
+            auto texts = co_await on_stations(all, [by_profile](StationSide& side) {
+                return std::pair{by_profile ? side.station.cpu().profile().name : side.name, side.metrics.render()};
+            });
             Reply reply;
             reply.content_type = "text/plain; version=0.0.4; charset=utf-8";
             reply.body = by_profile ? sum_metrics(texts) : merge_metrics(texts);
