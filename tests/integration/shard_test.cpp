@@ -49,7 +49,7 @@ std::vector<std::string> served(const SimProcess& sim) {
 
 // 3E binary read of D100 (one word) and its answer, 0.
 const Bytes kReadD100 = hex("500000FFFF03000C00100001040000640000A80100");
-const Bytes kD100IsZero = hex("D00000FFFF03000400000000");
+const Bytes kD100IsZero = hex("D00000FFFF0300040000000000");
 
 }  // namespace
 
