@@ -55,7 +55,7 @@ TEST_CASE("1000 stations over 4 shards: every shard a fair share; one more shard
     CHECK((moved >= 150 && moved <= 250));   // about 1000 / 5
 }
 
-TEST_CASE("--shard K/N, K, auto and auto/N; the pod ordinal from the host name", "[shard]") {
+TEST_CASE("the shard option: K/N, K, auto and auto/N; the pod ordinal from the host name", "[shard]") {
     auto both = config::parse_shard_option("3/10");
     CHECK(both.index == 3u);
     CHECK(both.count == 10u);
