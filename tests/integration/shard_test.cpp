@@ -53,7 +53,7 @@ const Bytes kD100IsZero = hex("D00000FFFF0300040000000000");
 
 }  // namespace
 
-TEST_CASE("shards: 4 processes of a 1000-station file serve disjoint sets whose union is the plant; /api/plant agrees",
+TEST_CASE("shards: 4 processes of a 1000-station file serve disjoint sets whose union is the plant, /api/plant agrees",
           "[plant][shard]") {
     std::vector<std::unique_ptr<SimProcess>> shards;
     for (unsigned k = 0; k < kShards; ++k) shards.push_back(start_shard(std::to_string(k) + "/4"));
@@ -128,7 +128,7 @@ TEST_CASE("shards: 4 processes of a 1000-station file serve disjoint sets whose 
                Catch::Contains("slmp_connections_accepted_total{station=\"" + mine[0] + "\"} 1\n"));
 }
 
-TEST_CASE("shards: a shard serves the same stations on every start; --shard K takes N from the file's \"shards\"",
+TEST_CASE("shards: a shard serves the same stations on every start, --shard K takes N from the file's shards",
           "[plant][shard]") {
     std::vector<std::string> first;
     {

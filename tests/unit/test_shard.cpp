@@ -39,7 +39,7 @@ TEST_CASE("a station's shard is a fixed function of its name and N (the generato
     CHECK(shard_of("anything", 1) == 0);
 }
 
-TEST_CASE("1000 stations over 4 shards: every shard a fair share; one more shard moves only what it takes", "[shard]") {
+TEST_CASE("1000 stations over 4 shards: every shard a fair share, one more shard moves only what it takes", "[shard]") {
     std::map<unsigned, unsigned> sizes;
     unsigned moved = 0;
     for (unsigned i = 1; i <= 1000; ++i) {
@@ -55,7 +55,7 @@ TEST_CASE("1000 stations over 4 shards: every shard a fair share; one more shard
     CHECK((moved >= 150 && moved <= 250));   // about 1000 / 5
 }
 
-TEST_CASE("the shard option: K/N, K, auto and auto/N; the pod ordinal from the host name", "[shard]") {
+TEST_CASE("the shard option: K/N, K, auto and auto/N, the pod ordinal from the host name", "[shard]") {
     auto both = config::parse_shard_option("3/10");
     CHECK(both.index == 3u);
     CHECK(both.count == 10u);
@@ -73,7 +73,7 @@ TEST_CASE("the shard option: K/N, K, auto and auto/N; the pod ordinal from the h
     CHECK(config::shard_host("slmp-plant-{shard}.slmp-plant", 4) == "slmp-plant-4.slmp-plant");
 }
 
-TEST_CASE("select_shard keeps the shard's stations and maps the whole plant; it refuses port 0 and an empty shard",
+TEST_CASE("select_shard keeps the shard's stations and maps the whole plant, it refuses port 0 and an empty shard",
           "[shard]") {
     const std::string file = R"({"bind": "127.0.0.1", "shards": 4, "shard_host": "p-{shard}.p",
         "stations": [{"template": {}, "count": 40, "name": "press-{i:04}", "tcp_port": "20000+i"}]})";
