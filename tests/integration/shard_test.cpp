@@ -18,24 +18,28 @@ using namespace slmp::test;
 
 namespace {
 
-// An address of its own, so the fixed ports 21001-22000 clash with no other test.
+// Each test case on an address of its own, so the fixed ports 21001-22000
+// clash with no other test, nor with the other case when ctest runs both at once.
 constexpr const char* kAddress = "127.83.17.1";
+constexpr const char* kRestartAddress = "127.83.17.2";
 constexpr unsigned kStations = 1000;
 constexpr unsigned kShards = 4;
 
-const std::string kPlant = R"({"bind": "127.83.17.1", "http": {"port": 0, "bind": "127.0.0.1"}, "threads": 1,
-    "shards": 4, "stations": [{"template": {"profile": "R08CPU"}, "count": 1000, "name": "press-{i:04}",
-                               "tcp_port": "21000+i"}]})";
+std::string plant_file(const std::string& address) {
+    return R"({"bind": ")" + address + R"(", "http": {"port": 0, "bind": "127.0.0.1"}, "threads": 1,
+        "shards": 4, "stations": [{"template": {"profile": "R08CPU"}, "count": 1000, "name": "press-{i:04}",
+                                   "tcp_port": "21000+i"}]})";
+}
 
 std::string press(unsigned i) {
     auto digits = std::to_string(i);
     return "press-" + std::string(4 - digits.size(), '0') + digits;
 }
 
-std::unique_ptr<SimProcess> start_shard(const std::string& shard) {
+std::unique_ptr<SimProcess> start_shard(const std::string& shard, const std::string& address = kAddress) {
     SimOptions options;
     options.plant = true;
-    options.config_json = kPlant;
+    options.config_json = plant_file(address);
     options.args = {"--shard", shard};
     return std::make_unique<SimProcess>(options);
 }
@@ -132,15 +136,15 @@ TEST_CASE("shards: a shard serves the same stations on every start, --shard K ta
           "[plant][shard]") {
     std::vector<std::string> first;
     {
-        auto shard = start_shard("2/4");
+        auto shard = start_shard("2/4", kRestartAddress);
         first = served(*shard);
     }
-    auto again = start_shard("2");
+    auto again = start_shard("2", kRestartAddress);
     CHECK(served(*again) == first);
     CHECK(http_get(again->http_port(), "/api/plant").json()["shards"] == kShards);
 
     TempDir dir;
-    auto wrong = run_sim({"--config", dir.write("plant.json", kPlant).string(), "--shard", "4/4"});
+    auto wrong = run_sim({"--config", dir.write("plant.json", plant_file(kRestartAddress)).string(), "--shard", "4/4"});
     CHECK(wrong.exit_code == 2);
     CHECK_THAT(wrong.err, Catch::Contains("--shard 4/4: shards are numbered 0 to 3"));
 }
