@@ -17,7 +17,7 @@ namespace {
 
 constexpr std::uint64_t kMaxTemplateCount = 10000;
 // Keys that belong to the whole process, not to one station.
-constexpr const char* kPlantWideKeys[] = {"http", "log_level", "threads", "stations"};
+constexpr const char* kPlantWideKeys[] = {"http", "log_level", "threads", "stations", "shards", "shard_host", "metrics_by"};
 
 // digits, i, + - * and parentheses; nothing else.
 class IndexExpression {
@@ -123,7 +123,7 @@ public:
     PlantReader(const nlohmann::json& root, std::string source, std::filesystem::path directory)
         : source_(std::move(source)), directory_(std::move(directory)) {
         defaults_ = root;
-        for (const char* key : {"stations", "threads", "name"}) defaults_.erase(key);
+        for (const char* key : {"stations", "threads", "name", "shards", "shard_host", "metrics_by"}) defaults_.erase(key);
     }
 
     // One station entry (a template's already expanded); `i` is its template index.
@@ -276,6 +276,13 @@ PlantConfig parse_plant_config(const std::string& json_text, const std::string& 
         return plant;
     }
     plant.plant = true;
+    if (root.has("shards")) plant.layout.file_count = static_cast<unsigned>(whole_setting(root, Section::Plant, "shards"));
+    if (root.has("shard_host")) plant.layout.host_pattern = root["shard_host"].string();
+    if (root.has("metrics_by")) {
+        plant.metrics_by = root["metrics_by"].string();
+        if (plant.metrics_by != "auto" && plant.metrics_by != "station" && plant.metrics_by != "profile")
+            root["metrics_by"].fail("'" + plant.metrics_by + "' is not a metrics mode", "use \"auto\", \"station\" or \"profile\"");
+    }
     if (root.has("name"))
         root["name"].fail("a plant has no name of its own", "name each station in \"stations\" instead");
     auto list = root["stations"];

@@ -5,6 +5,7 @@
 // with {i} placeholders in their strings and "20000+i" port expressions.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,10 +22,30 @@ struct StationConfig {
     FrontEndsConfig frontends;    // its kind and host-link / JW-51CM ports
 };
 
+// One station of the whole plant as GET /api/plant shows it: who serves it and
+// where a client reaches it (its configured ports).
+struct PlantStation {
+    std::string name;
+    unsigned shard = 0;
+    std::string bind;
+    std::vector<std::uint16_t> tcp, udp;
+};
+
+// How the plant is split over processes (config/shard.hpp, docs/plants.md "Shards").
+struct ShardLayout {
+    unsigned count = 1;           // processes serving the plant (--shard K/N)
+    unsigned index = 0;           // this one's
+    unsigned file_count = 1;      // the file's "shards": N for --shard K and --shard auto, and the manifests' replicas
+    std::string host_pattern;     // "shard_host": the DNS name of shard {shard} ("slmp-plant-{shard}.slmp-plant")
+    std::vector<PlantStation> stations;   // every station of the file, in its order (select_shard fills it)
+};
+
 struct PlantConfig {
     bool plant = false;           // the file has "stations" (names are shown, routes and metrics carry them)
     unsigned threads = 0;         // "threads"; 0: --threads or the machine's cores
-    std::vector<StationConfig> stations;   // one or more, names unique
+    std::vector<StationConfig> stations;   // one or more, names unique: the ones this process serves
+    ShardLayout layout;
+    std::string metrics_by = "auto";   // "metrics_by": the plant's /metrics per station or per profile
 };
 
 // A file with or without "stations". Throws ConfigError naming the file, the

@@ -42,6 +42,9 @@ constexpr Setting kSettings[] = {
     {.section = S::CommandLine, .key = "", .flag = "clock", .type = T::Choice, .flag_arg = F::Text,
      .choices = "realtime|frozen", .default_text = "realtime",
      .help = "realtime (default) or frozen: no scan until POST /api/clock/step or PUT /api/clock (docs/ci.md)"},
+    {.section = S::CommandLine, .key = "", .flag = "shard", .type = T::String, .flag_arg = F::Text,
+     .help = "serve shard K of N of the plant: K/N, K (N: the file's \"shards\"), auto or auto/N (K: the host name's "
+             "trailing -K, a StatefulSet pod's ordinal) (docs/plants.md)"},
     {.section = S::CommandLine, .key = "", .flag = "snapshot", .type = T::String, .flag_arg = F::Text,
      .help = "start from a station snapshot file saved from GET /api/snapshots/{name}/file (docs/ci.md)"},
 
@@ -52,6 +55,19 @@ constexpr Setting kSettings[] = {
      .fix = "leave \"threads\" out to use every core, or use 1 to 256",
      .doc = "threads serving the stations ([plants.md](plants.md#threads))", .doc_table = "station",
      .flag_fix = "use 1 to 256 (default: the machine's cores)"},
+    {.section = S::Plant, .key = "shards", .flag = "", .type = T::Integer, .min = 1, .max = 1000, .default_text = "1",
+     .help = "processes the plant is split over: N for --shard K and --shard auto, and the manifests' replicas "
+             "([plants.md](plants.md#shards-one-plant-file-n-processes))",
+     .fix = "use 1 to 1000 shards", .doc_table = "station"},
+    {.section = S::Plant, .key = "shard_host", .flag = "", .type = T::String, .default_text = "each station's bind address",
+     .help = "the host name of shard {shard} in GET /api/plant, e.g. \"slmp-plant-{shard}.slmp-plant\" "
+             "([plants.md](plants.md#shards-one-plant-file-n-processes))",
+     .doc_table = "station"},
+    {.section = S::Plant, .key = "metrics_by", .flag = "", .type = T::Choice, .choices = "auto|station|profile",
+     .default_text = "\"auto\"",
+     .help = "the plant's /metrics: a series set per station, or summed per profile; auto: per station up to 1000 "
+             "stations ([plants.md](plants.md#metrics-of-a-large-plant))",
+     .doc_table = "station"},
     {.section = S::Plant, .key = "stations", .flag = "", .type = T::Array, .default_text = "none",
      .help = "the stations of a plant, each an object of the keys below or a template ([plants.md](plants.md))",
      .doc_table = "station"},
@@ -620,7 +636,8 @@ nlohmann::json settings_json_schema() {
     for (const auto* face : frontends::faces()) extra.push_back(face->name());
     auto station = object_schema(S::Station, extra);
     auto plant = station;
-    plant["properties"]["threads"] = schema_of(setting(S::Plant, "threads"));
+    for (const char* key : {"threads", "shards", "shard_host", "metrics_by"})
+        plant["properties"][key] = schema_of(setting(S::Plant, key));
     auto stations = schema_of(setting(S::Plant, "stations"));
     // A station entry: its own keys, or a template of them ("template", "count", "first").
     auto entry = station;

@@ -2,8 +2,10 @@
 """How a plant's memory and start time scale (docs/plants.md, "Memory").
 
 Starts build/server/slmp-sim with a plant of N stations of one profile (TCP on
-any free port each, 127.0.0.1), then reports:
+any free port each, or on --first-port + 0, 1, ...; 127.0.0.1), then reports:
   start_s           from exec to the ready file (every station listening)
+  start_cpu_s       CPU time (user + system, all threads) the process used until then:
+                    the start's cost on a machine busy with other work
   rss_idle_mib      the process's RSS once ready, and per station
   private_dirty_idle_mib  its private dirty memory then (/proc/PID/smaps_rollup):
                     what the plant really costs, without the binary's shared pages
@@ -50,13 +52,17 @@ def main():
     ap.add_argument("--profile", default="R08CPU")
     ap.add_argument("--written", type=int, default=10, help="stations whose devices are all written")
     ap.add_argument("--threads", type=int, default=0)
+    ap.add_argument("--first-port", type=int, default=0,
+                    help="TCP ports FIRST, FIRST+1, ... (as a real plant's \"20000+i\"); default: any free port each, "
+                         "which costs the kernel a search of its bind table per station (~35 s for 10 000)")
     ap.add_argument("--binary", default="build/server/slmp-sim")
     args = ap.parse_args()
 
     with tempfile.TemporaryDirectory() as tmp:
         config = {"bind": "127.0.0.1", "http": {"port": 0}, "log_level": "warn",
                   "stations": [{"template": {"profile": args.profile}, "count": args.stations,
-                                "name": "s{i}", "tcp_port": 0}]}
+                                "name": "s{i}",
+                                "tcp_port": f"{args.first_port - 1}+i" if args.first_port else 0}]}
         path = os.path.join(tmp, "plant.json")
         with open(path, "w") as f:
             json.dump(config, f)
@@ -72,6 +78,7 @@ def main():
                     sys.exit("slmp-sim exited before it was ready")
                 time.sleep(0.005)
             start_s = time.monotonic() - began
+            start_cpu_s = cpu_ticks(proc.pid) / os.sysconf("SC_CLK_TCK")
             with open(ready) as f:
                 http = json.load(f)["http"]
             rss_idle = rss_kib(proc.pid)
@@ -95,6 +102,7 @@ def main():
             proc.wait()
     print(json.dumps({
         "stations": args.stations, "profile": args.profile, "start_s": round(start_s, 2),
+        "start_cpu_s": round(start_cpu_s, 2),
         "rss_idle_mib": round(rss_idle / 1024, 1),
         "rss_idle_kib_per_station": round(rss_idle / args.stations, 1),
         "private_dirty_idle_mib": round(dirty_idle / 1024, 1),

@@ -2,6 +2,9 @@
 
 #include "config/drive_config.hpp"
 #include "config/settings.hpp"
+#include "config/shard.hpp"
+
+#include <unistd.h>
 
 #include <filesystem>
 #include <iostream>
@@ -173,6 +176,27 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
         throw ConfigError((c.name.empty() ? std::string() : "station '" + c.name + "': ") + "no ports configured; give --tcp-port or --udp-port, or add \"ports\" to the configuration");
 }
 
+// --shard: keep the stations of this process's shard (docs/plants.md,
+// "Shards"); without it the process serves the whole plant as shard 0 of 1.
+void apply_shard_option(const po::variables_map& vm, config::PlantConfig& plant) {
+    unsigned index = 0, count = 1;
+    if (vm.count("shard")) {
+        if (!plant.plant)
+            throw ConfigError("--shard splits a plant, and the configuration is one station; give a file with "
+                              "\"stations\" (docs/plants.md)");
+        auto option = config::parse_shard_option(vm["shard"].as<std::string>());
+        count = option.count.value_or(plant.layout.file_count);
+        if (option.index) {
+            index = *option.index;
+        } else {
+            char host[256] = {};
+            gethostname(host, sizeof host - 1);
+            index = config::ordinal_of_host_name(host);
+        }
+    }
+    if (plant.plant) config::select_shard(plant, index, count);
+}
+
 }  // namespace
 
 CommandLine parse_command_line(int argc, char** argv) {
@@ -229,6 +253,7 @@ CommandLine parse_command_line(int argc, char** argv) {
                 throw ConfigError("--" + std::string(option) + " sets one station, and the configuration is a plant of " +
                                   std::to_string(cl.plant.stations.size()) + " stations; give it in each station's "
                                   "entry in the file instead (docs/plants.md)");
+    apply_shard_option(vm, cl.plant);
     for (auto& station : cl.plant.stations) apply_station_options(vm, cl.plant.plant, station);
     return cl;
 }

@@ -78,7 +78,7 @@ Server::Server(const config::PlantConfig& plant)
     take_initial_snapshots();
     if (first().http.enabled)
         http_ = std::make_unique<control::HttpServer>(main_, served, first().http,
-                                                      bind_address(http_bind()), plant_.plant);
+                                                      bind_address(http_bind()), plant_);
 }
 
 // The stations' network modules make one router (docs/plants.md, "Networks

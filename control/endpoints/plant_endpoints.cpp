@@ -1,6 +1,13 @@
-// The plant's own endpoints (docs/plants.md): health, the station list, and
-// one /metrics for every station. Each station is read on its own thread.
+// The plant's own endpoints (docs/plants.md): health, the station list (a
+// page at a time), the shards' map of the plant, and one /metrics for every
+// station (or every profile). Each station is read on its own thread.
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <optional>
+
 #include "config/config.hpp"
+#include "config/shard.hpp"
 #include "config/station_pattern.hpp"
 #include "control/endpoints/station_side.hpp"
 
@@ -26,6 +33,28 @@ json summary(StationSide& side) {
             {"connections", side.station.activity().connections().size()},
             {"requests", totals.requests},
             {"errors", totals.errors}};
+}
+
+// ?offset=N, ?limit=N, ?shard=N: a whole number, else 400 naming it.
+std::size_t count_param(const ApiRequest& request, const std::string& name, std::size_t fallback) {
+    const auto* text = request.param(name);
+    if (!text) return fallback;
+    std::size_t value = 0;
+    auto [end, error] = std::from_chars(text->data(), text->data() + text->size(), value);
+    if (error != std::errc() || end != text->data() + text->size())
+        throw ApiError{Status::bad_request, name + "=" + *text + ": give a whole number"};
+    return value;
+}
+
+bool contains_any_case(std::string_view name, std::string_view text) {
+    auto lower = [](unsigned char ch) { return std::tolower(ch); };
+    return std::ranges::search(name, text, {}, lower, lower).begin() != name.end() || text.empty();
+}
+
+// One station of the plant file: its shard and where a client reaches it.
+json plant_station(const config::ShardLayout& layout, const config::PlantStation& station) {
+    auto host = layout.host_pattern.empty() ? station.bind : config::shard_host(layout.host_pattern, station.shard);
+    return {{"name", station.name}, {"shard", station.shard}, {"host", host}, {"tcp", station.tcp}, {"udp", station.udp}};
 }
 
 Reply deferred(std::function<boost::asio::awaitable<Reply>()> later) {
@@ -73,14 +102,22 @@ void add_plant_endpoints(Router& router, Plant& plant) {
         json body{{"ready", plant.ready.load()}, {"stations", plant.stations.size()}};
         return json_reply(body, plant.ready ? Status::ok : Status::service_unavailable);
     });
-    router.add(Verb::get, "/api/stations", {"filter"}, [&plant](const ApiRequest& request) {
+    // The overview, a page at a time: a 10 000-station plant's whole list is
+    // 10 000 hops to the stations' strands; X-Total-Count says how many match.
+    router.add(Verb::get, "/api/stations", {"filter", "offset", "limit"}, [&plant](const ApiRequest& request) {
         std::string filter = request.param("filter") ? *request.param("filter") : "";
-        return deferred([&plant, filter]() -> boost::asio::awaitable<Reply> {
-            auto list = json::array();
-            for (auto& side : plant.stations)
-                if (side->name.find(filter) != std::string::npos)
-                    list.push_back(co_await on_station(*side, [&side] { return summary(*side); }));
-            co_return json_reply(list);
+        auto offset = count_param(request, "offset", 0);
+        auto limit = count_param(request, "limit", plant.stations.size());
+        std::vector<StationSide*> page;
+        std::size_t matching = 0;
+        for (auto& side : plant.stations)
+            if (contains_any_case(side->name, filter) && matching++ >= offset && page.size() < limit)
+                page.push_back(side.get());
+        return deferred([page, matching]() -> boost::asio::awaitable<Reply> {
+            auto lines = co_await on_stations(page, [](StationSide& side) { return summary(side); });
+            auto reply = json_reply(json(std::move(lines)));
+            reply.headers.emplace_back("X-Total-Count", std::to_string(matching));
+            co_return reply;
         });
     });
     router.add(Verb::get, "/api/stations/{name}", {}, [&plant](const ApiRequest& request) {
@@ -137,14 +174,42 @@ void add_plant_endpoints(Router& router, Plant& plant) {
         });
     });
     if (!plant.named) return;   // one station: its own /metrics, without a station label
-    router.add(Verb::get, "/metrics", {}, [&plant](const ApiRequest&) {
-        return deferred([&plant]() -> boost::asio::awaitable<Reply> {
-            std::vector<std::pair<std::string, std::string>> texts;
-            for (auto& side : plant.stations)
-                texts.emplace_back(side->name, co_await on_station(*side, [&side] { return side->metrics.render(); }));
+    // Which process serves which station of the plant file (docs/plants.md, "Shards").
+    router.add(Verb::get, "/api/plant", {"shard"}, [&plant](const ApiRequest& request) {
+        const auto& layout = *plant.layout;
+        std::optional<std::size_t> only;
+        if (request.param("shard")) only = count_param(request, "shard", 0);
+        auto list = json::array();
+        for (const auto& station : layout.stations)
+            if (!only || station.shard == *only) list.push_back(plant_station(layout, station));
+        return json_reply({{"shards", layout.count},
+                           {"shard", layout.index},
+                           {"station_count", layout.stations.size()},
+                           {"stations", std::move(list)}});
+    });
+    router.add(Verb::get, "/api/plant/stations/{name}", {}, [&plant](const ApiRequest& request) {
+        for (const auto& station : plant.layout->stations)
+            if (station.name == request.captures[0]) return json_reply(plant_station(*plant.layout, station));
+        throw ApiError{Status::not_found, "no station '" + request.captures[0] + "' in the plant; GET /api/plant lists them"};
+    });
+    // Per station (station="NAME" on every sample) or, for a plant too large
+    // for that, summed per profile (docs/plants.md, "Metrics of a large plant").
+    router.add(Verb::get, "/metrics", {"by"}, [&plant](const ApiRequest& request) {
+        bool by_profile = plant.metrics_by_profile;
+        if (const auto* by = request.param("by")) {
+            if (*by != "station" && *by != "profile")
+                throw ApiError{Status::bad_request, "by=" + *by + ": use by=station or by=profile"};
+            by_profile = *by == "profile";
+        }
+        return deferred([&plant, by_profile]() -> boost::asio::awaitable<Reply> {
+            std::vector<StationSide*> all;
+            for (auto& side : plant.stations) all.push_back(side.get());
+            auto texts = co_await on_stations(all, [by_profile](StationSide& side) {
+                return std::pair{by_profile ? side.station.cpu().profile().name : side.name, side.metrics.render()};
+            });
             Reply reply;
             reply.content_type = "text/plain; version=0.0.4; charset=utf-8";
-            reply.body = merge_metrics(texts);
+            reply.body = by_profile ? sum_metrics(texts) : merge_metrics(texts);
             co_return reply;
         });
     });

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <atomic>
+#include <exception>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -14,6 +15,7 @@
 
 #include "station/asio.hpp"
 
+#include "config/plant_config.hpp"
 #include "control/endpoints/api.hpp"
 #include "control/http/router.hpp"
 #include "control/observers/device_waits.hpp"
@@ -52,11 +54,50 @@ boost::asio::awaitable<std::invoke_result_t<F>> on_station(StationSide& side, F 
     return station::on_home(side.home, std::move(fn));
 }
 
+// Runs fn(side) on the strand of every station at once and resumes the caller
+// (on its strand) with the results in the stations' order. One round of the
+// stations' queues instead of one per station: a 10 000-station plant's
+// /metrics or overview page no longer waits behind each station in turn.
+template <class F>
+boost::asio::awaitable<std::vector<std::invoke_result_t<F, StationSide&>>> on_stations(std::vector<StationSide*> sides, F fn) {
+    using Result = std::invoke_result_t<F, StationSide&>;
+    struct Gather {
+        std::vector<Result> results;
+        std::vector<std::exception_ptr> errors;
+        std::atomic<std::size_t> left;
+        boost::asio::steady_timer done;
+    };
+    auto executor = co_await boost::asio::this_coro::executor;
+    auto gather = std::make_shared<Gather>(std::vector<Result>(sides.size()), std::vector<std::exception_ptr>(sides.size()),
+                                           sides.size(), boost::asio::steady_timer(executor));
+    gather->done.expires_at(boost::asio::steady_timer::time_point::max());
+    for (std::size_t k = 0; k < sides.size(); ++k)
+        boost::asio::post(sides[k]->home, [gather, side = sides[k], k, fn, executor] {
+            try {
+                gather->results[k] = fn(*side);
+            } catch (...) {
+                gather->errors[k] = std::current_exception();
+            }
+            // The last one wakes the caller; it is suspended by then (it runs on `executor` until it waits).
+            if (gather->left.fetch_sub(1, std::memory_order_acq_rel) == 1)
+                boost::asio::post(executor, [gather] { gather->done.cancel(); });
+        });
+    if (!sides.empty()) {
+        boost::system::error_code ignored;
+        co_await gather->done.async_wait(boost::asio::redirect_error(boost::asio::use_awaitable, ignored));
+    }
+    for (auto& error : gather->errors)
+        if (error) std::rethrow_exception(error);
+    co_return std::move(gather->results);
+}
+
 // The stations of the process, for the plant endpoints.
 struct Plant {
     std::vector<std::unique_ptr<StationSide>> stations;   // the first answers the routes without /api/stations/{name}
     bool named = false;                                    // a plant: station names in routes, metrics, lists
     std::atomic<bool> ready{false};                        // every station started (GET /readyz)
+    const config::ShardLayout* layout = nullptr;           // every station of the plant file and its shard (GET /api/plant)
+    bool metrics_by_profile = false;                       // GET /metrics sums the stations of each profile
 
     StationSide* find(std::string_view name);
 };

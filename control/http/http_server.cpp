@@ -21,6 +21,8 @@ namespace {
 constexpr std::size_t kMaxBodyBytes = 1 << 20;
 constexpr auto kIdleTimeout = std::chrono::seconds(60);    // between requests on a keep-alive connection
 constexpr auto kWriteTimeout = std::chrono::seconds(30);
+// A plant's /metrics in "auto" mode: one series set per station up to this many stations, per profile above.
+constexpr std::size_t kStationSeriesLimit = 1000;
 
 template <class Body>
 void common_fields(bhttp::response<Body>& response) {
@@ -32,7 +34,8 @@ void common_fields(bhttp::response<Body>& response) {
 }  // namespace
 
 HttpServer::HttpServer(const station::Home& strand, const std::vector<ServedStation>& stations,
-                       const config::HttpConfig& config, const asio::ip::address& bind, bool named)
+                       const config::HttpConfig& config, const asio::ip::address& bind,
+                       const config::PlantConfig& plant)
     : strand_(strand), acceptor_(strand) {
     tcp::endpoint endpoint(bind, config.port);
     try {
@@ -46,7 +49,11 @@ HttpServer::HttpServer(const station::Home& strand, const std::vector<ServedStat
                                   "the HTTP API off (--no-http)");
     }
     port_ = acceptor_.local_endpoint().port();
-    plant_.named = named;
+    plant_.named = plant.plant;
+    plant_.layout = &plant.layout;
+    // Per-station series of more than a thousand stations are more than a scrape should carry (docs/plants.md).
+    plant_.metrics_by_profile =
+        plant.metrics_by == "profile" || (plant.metrics_by == "auto" && stations.size() > kStationSeriesLimit);
     for (const auto& served : stations) plant_.stations.push_back(std::make_unique<StationSide>(served, port_));
     add_plant_endpoints(plant_router_, plant_);
     add_static_pages(plant_router_);

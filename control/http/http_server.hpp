@@ -12,6 +12,7 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
+#include "config/plant_config.hpp"
 #include "control/endpoints/station_side.hpp"
 
 namespace slmp::control {
@@ -19,9 +20,10 @@ namespace slmp::control {
 class HttpServer {
 public:
     // Binds the port (throws config::ConfigError naming the fix when it cannot)
-    // and serves on `strand`. `named`: a plant (routes, lists and metrics by name).
+    // and serves on `strand`. `plant`: a plant (routes, lists and metrics by
+    // name) or one station, its shards and metrics mode; it outlives the server.
     HttpServer(const station::Home& strand, const std::vector<ServedStation>& stations, const config::HttpConfig& config,
-               const boost::asio::ip::address& bind, bool named);
+               const boost::asio::ip::address& bind, const config::PlantConfig& plant);
 
     std::uint16_t port() const { return port_; }
     // Every station is listening: GET /readyz answers 200.

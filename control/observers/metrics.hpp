@@ -79,4 +79,11 @@ private:
 // among the labels (metrics_merge.cpp).
 std::string merge_metrics(const std::vector<std::pair<std::string, std::string>>& texts);
 
+// The same texts summed per group (here: the stations' profile), for a plant
+// too large for per-station series: each sample gets profile="GROUP" first
+// among its labels and holds the sum over the group's stations; gauges that
+// do not add up (the CPU state, scan and program times) are left out and
+// slmp_stations{profile, state} counts the stations in RUN, STOP and PAUSE.
+std::string sum_metrics(const std::vector<std::pair<std::string, std::string>>& texts);
+
 }  // namespace slmp::control

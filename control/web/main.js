@@ -34,18 +34,22 @@ async function main() {
   const shown = stationInHash();
   window.addEventListener('hashchange', () => { if (stationInHash() !== shown) location.reload(); });
   let stations = [];
+  let total = 0;
   try {
-    stations = await api('GET', '/api/stations');
+    ({ stations, total } = await fetchStations(''));
   } catch (e) {
     showMessage(`stations: ${e.message}`);   // still show the (first) station
   }
   const isPlant = stations.some((s) => s.name !== '');
-  if (isPlant && shown !== null && stations.some((s) => s.name === shown)) {
+  // A station past the first page of a large plant: ask for it by name.
+  const known = async (name) => stations.some((s) => s.name === name) ||
+    api('GET', `/api/stations/${encodeURIComponent(name)}`).then(() => true, () => false);
+  if (isPlant && shown !== null && await known(shown)) {
     station.name = shown;
     station.base = `/api/stations/${encodeURIComponent(shown)}`;
   } else if (isPlant) {
     document.body.dataset.view = 'plant';
-    startPlant(stations);
+    startPlant(stations, total);
     if (shown !== null) showMessage(`no station '${shown}' in this plant; pick one below`);
     return;
   }

@@ -5,16 +5,31 @@
 // any case) and keeps the text in the address as #/?filter=TEXT, so a link or
 // a reload opens the same view. Each name opens that station's page.
 // (In the fragment, not the query: the server serves / with no parameters.)
+// A plant of more than PLANT_PAGE stations (a 10 000-station process) is read a
+// page at a time: the first PLANT_PAGE stations whose name contains the filter
+// (the server filters, any case), so typing narrows what is polled.
 // Uses api(), showMessage() and $() from app.js.
 'use strict';
 
 const PLANT_POLL_MS = 1000;
+const PLANT_PAGE = 500;
 
 const plant = {
   rows: new Map(),       // station name -> its <tr>
   previous: new Map(),   // station name -> {requests, at}: the last poll, for the rate
   polling: false,        // a poll is in flight; the next tick skips rather than piles up
+  total: 0,              // stations in the plant (X-Total-Count without a filter)
+  large: false,          // more than PLANT_PAGE: poll a filtered page, not every station
 };
+
+// A page of the overview: {stations, total} where total counts the matches.
+async function fetchStations(filter) {
+  const path = `/api/stations?limit=${PLANT_PAGE}${filter ? `&filter=${encodeURIComponent(filter.trim())}` : ''}`;
+  const response = await fetch(path);
+  if (!response.ok) throw new Error(`GET ${path}: HTTP ${response.status}`);
+  const stations = await response.json();
+  return { stations, total: Number(response.headers.get('X-Total-Count') || stations.length) };
+}
 
 // Requests per second between two polls of one station, each {requests, at}
 // (`at` in ms). null without an earlier poll, or when the count went back.
@@ -72,11 +87,11 @@ function applyFilter() {
     row.hidden = !stationMatches(name, filter);
     if (!row.hidden) shown++;
   }
-  const total = plant.rows.size;
+  const total = plant.total;
   $('#station-count').textContent = shown === total ? `(${total})` : `(${shown} of ${total})`;
 }
 
-function showStations(stations, at) {
+function showStations(stations, at, matching = stations.length) {
   const body = $('#stations tbody');
   const seen = new Set();
   let running = 0;
@@ -96,7 +111,9 @@ function showStations(stations, at) {
   for (const [name, row] of plant.rows) {
     if (!seen.has(name)) { row.remove(); plant.rows.delete(name); plant.previous.delete(name); }
   }
-  $('#plant-summary').textContent = `plant of ${stations.length} stations · ${running} in RUN`;
+  $('#plant-summary').textContent = plant.large
+    ? `plant of ${plant.total} stations · ${matching} match, the first ${stations.length} shown: type in the filter to narrow`
+    : `plant of ${plant.total} stations · ${running} in RUN`;
   applyFilter();
 }
 
@@ -104,8 +121,9 @@ async function pollStations() {
   if (plant.polling) return;
   plant.polling = true;
   try {
-    const stations = await api('GET', '/api/stations');
-    showStations(stations, performance.now());
+    const page = await fetchStations(plant.large ? $('#station-filter').value : '');
+    if (!plant.large) plant.total = page.total;
+    showStations(page.stations, performance.now(), page.total);
   } catch (e) {
     showMessage(`stations: ${e.message}`);
   } finally {
@@ -113,8 +131,10 @@ async function pollStations() {
   }
 }
 
-function startPlant(stations) {
-  document.title = `plant (${stations.length} stations) — slmp-sim monitor`;
+function startPlant(stations, total) {
+  plant.total = total;
+  plant.large = total > PLANT_PAGE;
+  document.title = `plant (${total} stations) — slmp-sim monitor`;
   const filter = $('#station-filter');
   const filterInHash = () => new URLSearchParams(location.hash.split('?')[1] || '').get('filter') || '';
   filter.value = filterInHash();
@@ -125,6 +145,6 @@ function startPlant(stations) {
   });
   // The address edited by hand (main.js reloads only for another station).
   window.addEventListener('hashchange', () => { filter.value = filterInHash(); applyFilter(); });
-  showStations(stations, performance.now());
+  showStations(stations, performance.now(), total);
   setInterval(pollStations, PLANT_POLL_MS);
 }

@@ -60,7 +60,7 @@ json sample(const Setting& row) {
         {"password_lockout", {{"attempts", 3}}}, {"latch", {{"D", {0, 9}}}}, {"timers", json::array()},
         {"counters", json::array()}, {"program", {{"file", "line1.csv"}}}, {"error", {{"code", "1900"}}},
         {"file", "line1.csv"}, {"comments", "comments.csv"}, {"timer_limit", json::object()}, {"seed", 7},
-        {"wdt_ms", 200}};
+        {"wdt_ms", 200}, {"shard_host", "plant-{shard}.plant"}};
     if (auto it = samples.find(std::string(row.key)); it != samples.end()) return it->second;
     switch (row.type) {
         case SettingType::Integer: return static_cast<std::uint64_t>(row.max);
@@ -74,7 +74,9 @@ json sample(const Setting& row) {
 // A configuration document that holds `value` under the row's key.
 json document(Section section, const std::string& key, const json& value) {
     switch (section) {
-        case Section::Plant:
+        case Section::Plant:   // a plant's own key needs a plant
+            if (key != "stations" && key != "threads") return {{key, value}, {"stations", json::array({{{"name", "a"}}})}};
+            return {{key, value}};
         case Section::Station: return {{key, value}};
         case Section::Port: {
             json port = {{"transport", "tcp"}, {"port", 0}};
@@ -220,11 +222,13 @@ TEST_CASE("every row's flag is accepted by the command line", "[settings]") {
     std::filesystem::create_directories(dir);
     write_text(dir / "c.json", "{}");
     write_text(dir / "labels.json", R"({"labels": []})");
+    write_text(dir / "plant.json", R"({"stations": [{"name": "a", "tcp_port": 0}]})");
     const std::map<std::string, std::vector<std::string>> values = {
         {"config", {(dir / "c.json").string()}}, {"check-config", {(dir / "c.json").string()}},
         {"labels", {(dir / "labels.json").string()}}, {"drive", {"4=" + dir.string()}},
         {"network-no", {"1", "--station-no", "1"}}, {"station-no", {"1", "--network-no", "1"}},
-        {"profile", {"R04CPU"}}, {"switch", {"STOP"}}, {"clock", {"frozen"}}};
+        {"profile", {"R04CPU"}}, {"switch", {"STOP"}}, {"clock", {"frozen"}},
+        {"shard", {"0/1", "--config", (dir / "plant.json").string()}}};
     for (const auto& row : config::all_settings()) {
         if (row.flag.empty()) continue;
         const std::string flag(row.long_flag());
@@ -237,7 +241,7 @@ TEST_CASE("every row's flag is accepted by the command line", "[settings]") {
             else if (row.has_range()) args.words.push_back(std::to_string(static_cast<std::uint64_t>(row.max / row.flag_scale)));
             else args.words.push_back((dir / "file").string());
         }
-        if (flag != "tcp-port" && flag != "udp-port") args.words.insert(args.words.end(), {"--tcp-port", "0"});
+        if (flag != "tcp-port" && flag != "udp-port" && flag != "shard") args.words.insert(args.words.end(), {"--tcp-port", "0"});
         INFO(flag);
         std::ostringstream swallow;   // --help, --version, --list-profiles print
         auto* old = std::cout.rdbuf(swallow.rdbuf());
@@ -252,7 +256,7 @@ TEST_CASE("a flag outside its row's range is refused naming the flag", "[setting
         const std::string flag(row.long_flag());
         Args args;
         args.words = {"slmp-sim", "--" + flag, std::to_string(static_cast<std::uint64_t>(row.max / row.flag_scale) + 1)};
-        if (flag != "tcp-port" && flag != "udp-port") args.words.insert(args.words.end(), {"--tcp-port", "0"});
+        if (flag != "tcp-port" && flag != "udp-port" && flag != "shard") args.words.insert(args.words.end(), {"--tcp-port", "0"});
         INFO(flag);
         auto fix = row.flag_fix.empty() ? row.fix : row.flag_fix;
         CHECK_THROWS_WITH(args.run(), Catch::StartsWith("--" + flag + " ") && Catch::Contains(std::string(fix)));
