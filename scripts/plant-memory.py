@@ -10,6 +10,7 @@ any free port each, 127.0.0.1), then reports:
   cpu_idle_percent  CPU the idle plant uses over --idle-seconds (default 3), from
                     /proc/PID/stat (utime + stime); idle stations sleep (docs/timing.md,
                     "What wakes a station"), so this is what is left
+  (--scenario-stations N: N of them run a scenario meanwhile, so scan every scan time)
   wakeups_per_s     scan-loop wake-ups a second over that time, summed over the stations
                     (GET /api/stations "wakeups"; absent from builds without it)
   rss_written_mib   RSS after K stations had every word of D, W, R, ZR and every
@@ -61,6 +62,8 @@ def main():
     ap.add_argument("--written", type=int, default=10, help="stations whose devices are all written")
     ap.add_argument("--threads", type=int, default=0)
     ap.add_argument("--idle-seconds", type=float, default=3, help="how long idle CPU is measured")
+    ap.add_argument("--scenario-stations", type=int, default=0,
+                    help="stations s1..sN run a ramp scenario (they scan every scan time) while idle CPU is measured")
     ap.add_argument("--binary", default="build/server/slmp-sim")
     args = ap.parse_args()
 
@@ -87,6 +90,13 @@ def main():
                 http = json.load(f)["http"]
             rss_idle = rss_kib(proc.pid)
             dirty_idle = private_dirty_kib(proc.pid)
+            if args.scenario_stations:
+                ramp = {"stations": [f"s{i}" for i in range(1, args.scenario_stations + 1)],
+                        "scenario": {"name": "ramp", "timeline": {"steps": [
+                            {"at_ms": 0, "ramp": "D0", "from": 0, "to": 1000, "over_ms": 600000}]}}}
+                req = urllib.request.Request(f"http://127.0.0.1:{http}/api/plant/scenarios",
+                                             data=json.dumps(ramp).encode(), method="POST")
+                urllib.request.urlopen(req).read()
             wakeups = total_wakeups(http)
             ticks = cpu_ticks(proc.pid)
             time.sleep(args.idle_seconds)
@@ -112,6 +122,7 @@ def main():
         "rss_idle_kib_per_station": round(rss_idle / args.stations, 1),
         "private_dirty_idle_mib": round(dirty_idle / 1024, 1),
         "private_dirty_idle_kib_per_station": round(dirty_idle / args.stations, 1),
+        "scenario_stations": args.scenario_stations,
         "cpu_idle_percent": round(cpu_idle, 1),
         "wakeups_per_s": None if wakeups is None else round((wakeups_after - wakeups) / args.idle_seconds, 1),
         "written_stations": args.written,

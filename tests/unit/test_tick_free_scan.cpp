@@ -121,7 +121,7 @@ TEST_CASE("tick-free scans equal ticking ones at many instants, at several clock
     twins.set("STC1", 1);            // a retentive one
     if (profile == "R08CPU") twins.set("LTC0", 1);
     sample(8);
-    CHECK(twins.get("TS0") == 1);    // the samples ran past their presets
+    if (speed >= 1) CHECK(twins.get("TS0") == 1);   // the samples ran past its preset (2 s of CPU time)
     twins.set("STC1", 0);            // retentive: keeps its value
     twins.set("TC5", 0);             // resets
     twins.set("TN0", 3);             // a client rewinds a done timer (RST-like): it times again
