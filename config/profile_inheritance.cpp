@@ -2,7 +2,9 @@
 // profile's JSON is taken whole and the extending profile's keys are laid
 // over it: objects merge key by key (so "device_sizes": {"D": 20480} changes
 // one size and keeps the others), anything else — strings, numbers, arrays —
-// replaces the base's value. A base may itself extend another; a cycle or an
+// replaces the base's value, and null removes the base's key (a probed
+// profile, docs/twin.md, says so of a frame or limit its base has and the
+// probed port has not). A base may itself extend another; a cycle or an
 // unknown base stops with the chain that led there.
 #include <filesystem>
 #include <fstream>
@@ -19,7 +21,9 @@ constexpr std::size_t kMaxDepth = 8;
 
 void lay_over(nlohmann::json& base, const nlohmann::json& over) {
     for (const auto& [key, value] : over.items()) {
-        if (value.is_object() && base.contains(key) && base[key].is_object())
+        if (value.is_null())
+            base.erase(key);
+        else if (value.is_object() && base.contains(key) && base[key].is_object())
             lay_over(base[key], value);
         else
             base[key] = value;

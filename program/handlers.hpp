@@ -50,7 +50,7 @@ inline void combine(Machine& m, const Step& s, F f) {
 // P form (docs/program.md "Instructions", "The scan"): the body runs when r went OFF->ON since this step last ran.
 SLMP_HANDLER(pulse);
 
-// §5.1 sequence (instructions_sequence.cpp)
+// Sequence (instructions_sequence.cpp)
 SLMP_HANDLER(ld); SLMP_HANDLER(ldi); SLMP_HANDLER(and_); SLMP_HANDLER(ani); SLMP_HANDLER(or_); SLMP_HANDLER(ori);
 SLMP_HANDLER(ldp); SLMP_HANDLER(ldf); SLMP_HANDLER(andp); SLMP_HANDLER(andf); SLMP_HANDLER(orp); SLMP_HANDLER(orf);
 SLMP_HANDLER(ldpi); SLMP_HANDLER(ldfi); SLMP_HANDLER(andpi); SLMP_HANDLER(andfi); SLMP_HANDLER(orpi); SLMP_HANDLER(orfi);
@@ -60,43 +60,43 @@ SLMP_HANDLER(out_bit); SLMP_HANDLER(set_bit); SLMP_HANDLER(rst_bit); SLMP_HANDLE
 SLMP_HANDLER(pls); SLMP_HANDLER(plf); SLMP_HANDLER(ff);
 SLMP_HANDLER(mc); SLMP_HANDLER(mcr); SLMP_HANDLER(nop); SLMP_HANDLER(end); SLMP_HANDLER(fend);
 
-// §5.2 timers and counters (instructions_timers.cpp)
+// Timers and counters (instructions_timers.cpp)
 SLMP_HANDLER(out_timer); SLMP_HANDLER(out_counter); SLMP_HANDLER(rst_timer_counter);
 
-// §5.3 comparison contacts (instructions_compare.cpp): variant = kind | op << 2 | combine << 5
+// Comparison contacts (instructions_compare.cpp): variant = kind | op << 2 | combine << 5
 SLMP_HANDLER(compare_ld); SLMP_HANDLER(compare_and); SLMP_HANDLER(compare_or);
 enum CompareKind : std::uint8_t { CmpI16 = 0, CmpI32 = 1, CmpFloat = 2, CmpString = 3 };
 enum CompareOp : std::uint8_t { CmpEq = 0, CmpNe, CmpGt, CmpLe, CmpLt, CmpGe };
 
-// §5.4 arithmetic (instructions_arithmetic.cpp)
+// Arithmetic (instructions_arithmetic.cpp)
 SLMP_HANDLER(add16); SLMP_HANDLER(sub16); SLMP_HANDLER(mul16); SLMP_HANDLER(div16);
 SLMP_HANDLER(add32); SLMP_HANDLER(sub32); SLMP_HANDLER(mul32); SLMP_HANDLER(div32);
 SLMP_HANDLER(inc16); SLMP_HANDLER(dec16); SLMP_HANDLER(inc32); SLMP_HANDLER(dec32);
 SLMP_HANDLER(neg16); SLMP_HANDLER(neg32);
 SLMP_HANDLER(fadd); SLMP_HANDLER(fsub); SLMP_HANDLER(fmul); SLMP_HANDLER(fdiv); SLMP_HANDLER(fneg);
 
-// §5.5 conversion (instructions_conversion.cpp)
+// Conversion (instructions_conversion.cpp)
 SLMP_HANDLER(bcd16); SLMP_HANDLER(bcd32); SLMP_HANDLER(bin16); SLMP_HANDLER(bin32);
 SLMP_HANDLER(flt16); SLMP_HANDLER(flt32); SLMP_HANDLER(int16); SLMP_HANDLER(int32);
 
-// §5.6 transfer (instructions_transfer.cpp)
+// Transfer (instructions_transfer.cpp)
 SLMP_HANDLER(mov16); SLMP_HANDLER(mov32); SLMP_HANDLER(cml16); SLMP_HANDLER(cml32);
 SLMP_HANDLER(bmov); SLMP_HANDLER(fmov16); SLMP_HANDLER(fmov32); SLMP_HANDLER(xch16); SLMP_HANDLER(xch32);
 SLMP_HANDLER(swap); SLMP_HANDLER(smov);
 
-// §5.7 logic (instructions_logic.cpp): variant 0 AND, 1 OR, 2 XOR, 3 XNR
+// Logic (instructions_logic.cpp): variant 0 AND, 1 OR, 2 XOR, 3 XNR
 SLMP_HANDLER(logic16); SLMP_HANDLER(logic32);
 
-// §5.8 rotation and shift (instructions_shift.cpp): variant = direction/carry form
+// Rotation and shift (instructions_shift.cpp): variant = direction/carry form
 SLMP_HANDLER(rotate16); SLMP_HANDLER(rotate32); SLMP_HANDLER(shift_word); SLMP_HANDLER(sft);
 SLMP_HANDLER(bit_shift); SLMP_HANDLER(word_shift); SLMP_HANDLER(fx_bit_shift);
 
-// §5.9 bit and data processing (instructions_data.cpp)
+// Bit and data processing (instructions_data.cpp)
 SLMP_HANDLER(bset); SLMP_HANDLER(brst); SLMP_HANDLER(test16); SLMP_HANDLER(test32); SLMP_HANDLER(bkrst);
 SLMP_HANDLER(zrst); SLMP_HANDLER(sum16); SLMP_HANDLER(sum32); SLMP_HANDLER(deco); SLMP_HANDLER(enco);
 SLMP_HANDLER(seg);
 
-// §5.10 program control (instructions_control.cpp)
+// Program control (instructions_control.cpp)
 SLMP_HANDLER(cj); SLMP_HANDLER(scj); SLMP_HANDLER(jmp); SLMP_HANDLER(goend); SLMP_HANDLER(call);
 SLMP_HANDLER(ret); SLMP_HANDLER(for_); SLMP_HANDLER(next); SLMP_HANDLER(break_); SLMP_HANDLER(wdt);
 SLMP_HANDLER(stop);

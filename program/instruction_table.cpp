@@ -1,5 +1,5 @@
 // The instruction table (docs/program.md "Instructions"). One row per
-// mnemonic as the CPU names it; the P forms of §5.11 are the rows with
+// mnemonic as the CPU names it; the P forms are the rows with
 // pulse_form set (the compiler strips the trailing P only for those, so LDP,
 // MPP, NOP, STOP and OUTHS stay instructions of their own).
 #include "program/instruction_table.hpp"
@@ -49,7 +49,7 @@ constexpr std::uint8_t cmp(CompareKind kind, CompareOp op) { return static_cast<
     SLMP_COMPARE_ROWS(prefix, role, handler, "$", CmpString, "ss")
 
 const auto kTable = std::to_array<InstructionInfo>({
-    // §5.1 contacts and rung structure
+    // contacts and rung structure
     row("LD", Role::Load, Cost::Basic, ALL, false, {"b", "s"}, ld),
     row("LDI", Role::Load, Cost::Basic, ALL, false, {"b", "s"}, ldi),
     row("AND", Role::Combine, Cost::Basic, ALL, false, {"b", "s"}, and_),
@@ -76,7 +76,7 @@ const auto kTable = std::to_array<InstructionInfo>({
     row("INV", Role::Modify, Cost::Basic, ALL, false, none, inv),
     edge_row("MEP", Role::Modify, ALL, none, mep),
     edge_row("MEF", Role::Modify, ALL, none, mef),
-    // §5.1 outputs; OUT and RST of timers, counters and words are chosen by operand in compile.cpp
+    // outputs; OUT and RST of timers, counters and words are chosen by operand in compile.cpp
     row("OUT", Role::Output, Cost::Basic, ALL, false, {"o", "d"}, out_bit),
     row("OUTH", Role::Output, Cost::Basic, ALL, false, {"tw", "d preset"}, out_timer),
     row("OUTHS", Role::Output, Cost::Basic, IQF, false, {"tw", "d preset"}, out_timer),
@@ -94,12 +94,12 @@ const auto kTable = std::to_array<InstructionInfo>({
     row("END", Role::Free, Cost::Basic, ALL, false, none, end),
     row("FEND", Role::Free, Cost::Basic, ALL, false, none, fend),
 
-    // §5.3 comparison contacts
+    // comparison contacts
     SLMP_COMPARE_KINDS("LD", Role::Load, compare_ld),
     SLMP_COMPARE_KINDS("AND", Role::Combine, compare_and),
     SLMP_COMPARE_KINDS("OR", Role::Combine, compare_or),
 
-    // §5.4 arithmetic
+    // arithmetic
     two_or_three("+", Cost::Arith, "wW", "wwW", add16),
     two_or_three("-", Cost::Arith, "wW", "wwW", sub16),
     row("*", Role::Output, Cost::Arith, ALL, true, {"wwD", "s1 s2 d"}, mul16),
@@ -128,7 +128,7 @@ const auto kTable = std::to_array<InstructionInfo>({
     fx("DMUL", Cost::Arith, {"ddV", "s1 s2 d"}, mul32, "D*"),
     fx("DDIV", Cost::Arith, {"ddV", "s1 s2 d"}, div32, "D/"),
 
-    // §5.5 conversion
+    // conversion
     row("BCD", Role::Output, Cost::Arith, ALL, true, {"wW", "s d"}, bcd16),
     row("DBCD", Role::Output, Cost::Arith, ALL, true, {"dD", "s d"}, bcd32),
     row("BIN", Role::Output, Cost::Arith, ALL, true, {"wW", "s d"}, bin16),
@@ -142,7 +142,7 @@ const auto kTable = std::to_array<InstructionInfo>({
     row("FLT2INT", Role::Output, Cost::Float, IQR | IQF, true, {"eW", "s d"}, int16),
     row("FLT2DINT", Role::Output, Cost::Float, IQR | IQF, true, {"eD", "s d"}, int32),
 
-    // §5.6 transfer
+    // transfer
     row("MOV", Role::Output, Cost::Move, ALL, true, {"wW", "s d"}, mov16),
     row("DMOV", Role::Output, Cost::Move, ALL, true, {"dD", "s d"}, mov32),
     row("EMOV", Role::Output, Cost::Move, ALL, true, {"eE", "s d"}, mov32),
@@ -156,7 +156,7 @@ const auto kTable = std::to_array<InstructionInfo>({
     row("DXCH", Role::Output, Cost::Move, ALL, true, {"DD", "d1 d2"}, xch32),
     row("SWAP", Role::Output, Cost::Move, ALL, true, {"W", "d"}, swap),
 
-    // §5.7 logic
+    // logic
     two_or_three("WAND", Cost::Arith, "wW", "wwW", logic16, 0),
     two_or_three("WOR", Cost::Arith, "wW", "wwW", logic16, 1),
     two_or_three("WXOR", Cost::Arith, "wW", "wwW", logic16, 2),
@@ -166,7 +166,7 @@ const auto kTable = std::to_array<InstructionInfo>({
     two_or_three("DXOR", Cost::Arith, "dD", "ddD", logic32, 2),
     two_or_three("DXNR", Cost::Arith, "dD", "ddD", logic32, 3),
 
-    // §5.8 rotation and shift: variant bit 0 = left, bit 1 = through the carry
+    // rotation and shift: variant bit 0 = left, bit 1 = through the carry
     row("ROR", Role::Output, Cost::Arith, ALL, true, {"Wn", "d n"}, rotate16, 0),
     row("ROL", Role::Output, Cost::Arith, ALL, true, {"Wn", "d n"}, rotate16, 1),
     row("RCR", Role::Output, Cost::Arith, ALL, true, {"Wn", "d n"}, rotate16, 2),
@@ -185,7 +185,7 @@ const auto kTable = std::to_array<InstructionInfo>({
     fx("SFTR", Cost::Block, {"yxnn", "s d n1 n2"}, fx_bit_shift, "BSFR", 0),
     fx("SFTL", Cost::Block, {"yxnn", "s d n1 n2"}, fx_bit_shift, "BSFL", 1),
 
-    // §5.9 bit and data processing
+    // bit and data processing
     row("BSET", Role::Output, Cost::Move, ALL, true, {"Wn", "d n"}, bset),
     row("BRST", Role::Output, Cost::Move, ALL, true, {"Wn", "d n"}, brst),
     row("TEST", Role::Output, Cost::Arith, ALL, true, {"wno", "s1 s2 d"}, test16),
@@ -198,7 +198,7 @@ const auto kTable = std::to_array<InstructionInfo>({
     row("ENCO", Role::Output, Cost::Arith, ALL, true, {"zWn", "s d n"}, enco),
     row("SEG", Role::Output, Cost::Arith, ALL, true, {"wW", "s d"}, seg),
 
-    // §5.10 program control
+    // program control
     row("CJ", Role::Output, Cost::Basic, ALL, false, {"p", "Pn"}, cj),
     edge_row("SCJ", Role::Output, ALL, {"p", "Pn"}, scj),
     row("JMP", Role::Free, Cost::Basic, ALL, false, {"p", "Pn"}, jmp),

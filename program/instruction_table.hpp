@@ -1,6 +1,6 @@
 // The one instruction table (docs/program.md "Instructions"): every fact the
 // compiler needs about a mnemonic — its role in a rung, operand forms, cost
-// class, families, pulse form and handler. Spec §5.
+// class, families, pulse form and handler.
 #pragma once
 
 #include <array>

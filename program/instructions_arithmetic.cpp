@@ -1,4 +1,4 @@
-// §5.4 arithmetic (docs/program.md "Instructions"): signed two's complement,
+// Arithmetic (docs/program.md "Instructions"): signed two's complement,
 // wrapping silently; ÷0 and bad floats are operation errors (docs/program.md "Operation errors").
 // Sources are read and destinations probed before anything is written, so a
 // failing instruction writes nothing.

@@ -1,4 +1,4 @@
-// §5.3 comparison contacts (docs/program.md "Instructions"): 16-bit, 32-bit,
+// Comparison contacts (docs/program.md "Instructions"): 16-bit, 32-bit,
 // float and string, LD/AND/OR. variant = kind | op << 2.
 #include <cstring>
 

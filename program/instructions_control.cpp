@@ -1,4 +1,4 @@
-// §5.10 program control (docs/program.md "Program control"). Jump targets
+// Program control (docs/program.md "Program control"). Jump targets
 // are step indices resolved at load (op[0].value); a label costs nothing.
 #include "program/handlers.hpp"
 

@@ -1,4 +1,4 @@
-// §5.5 conversion (docs/program.md "Instructions").
+// Conversion (docs/program.md "Instructions").
 #include <limits>
 
 #include "program/handlers.hpp"

@@ -1,4 +1,4 @@
-// §5.9 bit and data processing (docs/program.md "Instructions").
+// Bit and data processing (docs/program.md "Instructions").
 #include <bit>
 
 #include "program/handlers.hpp"

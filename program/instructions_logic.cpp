@@ -1,4 +1,4 @@
-// §5.7 logical operations (docs/program.md "Instructions"): variant 0 AND, 1 OR, 2 XOR, 3 XNR.
+// Logical operations (docs/program.md "Instructions"): variant 0 AND, 1 OR, 2 XOR, 3 XNR.
 #include "program/handlers.hpp"
 
 namespace slmp::program::detail {

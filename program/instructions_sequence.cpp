@@ -1,4 +1,4 @@
-// §5.1 sequence instructions (docs/program.md "Instructions"). The result
+// Sequence instructions (docs/program.md "Instructions"). The result
 // stack slots are fixed by the compiler (each LD writes the value it covers to
 // `s.slot`, a rung start writes a scratch slot), so no handler counts depth.
 #include "program/handlers.hpp"

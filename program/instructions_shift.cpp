@@ -1,4 +1,4 @@
-// §5.8 rotation and shift (docs/program.md "Instructions"). The carry is SM700
+// Rotation and shift (docs/program.md "Instructions"). The carry is SM700
 // (docs/program.md "The scan", inferred). Rotation and word shift counts are taken mod 16 / 32
 // (inferred). variant bit 0: left; bit 1: through the carry (RCR/RCL).
 #include "program/handlers.hpp"

@@ -1,4 +1,4 @@
-// §5.2 timers and counters, with the update rule of docs/program.md
+// Timers and counters, with the update rule of docs/program.md
 // "Timers": the value moves when OUT T executes, from an
 // accumulator that end_of_scan() fills for every timer whose coil is ON.
 // Step fields: op[0] the timer/counter (number fixed at load), op[1] the

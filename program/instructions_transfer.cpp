@@ -1,4 +1,4 @@
-// §5.6 transfer (docs/program.md "Instructions"). Blocks are range-checked
+// Transfer (docs/program.md "Instructions"). Blocks are range-checked
 // whole before the first word moves and cost `block` per word (docs/program.md "Modelled time").
 #include "program/handlers.hpp"
 

@@ -6,6 +6,8 @@ namespace slmp::protocol::client {
 namespace {
 
 std::uint16_t sub(bool iqr) { return iqr ? 0x0040 : 0x0000; }
+// 0004: the L CPUs' form of 1822/1824/1825/1827 with a 32-character password slot.
+std::uint16_t sub(const FileTarget& t) { return t.iqr ? 0x0040 : t.l_password ? 0x0004 : 0x0000; }
 
 void raw_text(FieldWriter& w, const std::string& s) {
     w.raw(std::span(reinterpret_cast<const std::uint8_t*>(s.data()), s.size()));
@@ -23,10 +25,10 @@ void name(FieldWriter& w, bool iqr, const std::string& n) {
 }
 
 // 0000: 4 characters, space-padded; 0040: length + characters (§3.1).
-void password(FieldWriter& w, bool iqr, const std::string& pw) {
+void password(FieldWriter& w, bool iqr, const std::string& pw, bool l_password = false) {
     if (!iqr) {
         auto padded = pw;
-        padded.resize(4, ' ');
+        padded.resize(l_password ? 32 : 4, ' ');
         raw_text(w, padded);
         return;
     }
@@ -84,18 +86,18 @@ std::vector<std::uint8_t> file_new(const FrameOptions& o, const FileTarget& t, s
 }
 
 std::vector<std::uint8_t> file_delete(const FrameOptions& o, const FileTarget& t) {
-    return build_request(o, 0x1822, sub(t.iqr), [&](FieldWriter& w) {
-        password(w, t.iqr, t.password);
+    return build_request(o, 0x1822, sub(t), [&](FieldWriter& w) {
+        password(w, t.iqr, t.password, t.l_password);
         w.u16(t.drive);
         name(w, t.iqr, t.name);
     });
 }
 
 std::vector<std::uint8_t> file_copy(const FrameOptions& o, const FileTarget& to, const FileTarget& from) {
-    return build_request(o, 0x1824, sub(to.iqr), [&](FieldWriter& w) {
+    return build_request(o, 0x1824, sub(to), [&](FieldWriter& w) {
         w.u64(0);
         for (const auto* t : {&to, &from}) {
-            password(w, to.iqr, t->password);
+            password(w, to.iqr, t->password, to.l_password);
             w.u16(t->drive);
             name(w, to.iqr, t->name);
         }
@@ -103,8 +105,8 @@ std::vector<std::uint8_t> file_copy(const FrameOptions& o, const FileTarget& to,
 }
 
 std::vector<std::uint8_t> file_state(const FrameOptions& o, const FileTarget& t, std::uint16_t attribute) {
-    return build_request(o, 0x1825, sub(t.iqr), [&](FieldWriter& w) {
-        password(w, t.iqr, t.password);
+    return build_request(o, 0x1825, sub(t), [&](FieldWriter& w) {
+        password(w, t.iqr, t.password, t.l_password);
         w.u16(t.drive);
         w.u16(attribute);
         name(w, t.iqr, t.name);
@@ -122,8 +124,8 @@ std::vector<std::uint8_t> file_date(const FrameOptions& o, const FileTarget& t, 
 }
 
 std::vector<std::uint8_t> file_open(const FrameOptions& o, const FileTarget& t, bool for_write) {
-    return build_request(o, 0x1827, sub(t.iqr), [&](FieldWriter& w) {
-        password(w, t.iqr, t.password);
+    return build_request(o, 0x1827, sub(t), [&](FieldWriter& w) {
+        password(w, t.iqr, t.password, t.l_password);
         w.u16(for_write ? 0x0100 : 0x0000);
         w.u16(t.drive);
         name(w, t.iqr, t.name);

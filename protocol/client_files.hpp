@@ -20,6 +20,7 @@ struct FileTarget {
     std::uint16_t drive = 4;
     std::string name;        // 0040: a path from the root ("LOG\\A.CSV"); 0000: an 8.3 name
     std::string password;    // empty: none
+    bool l_password = false; // Q/L form as subcommand 0004: the L CPUs' 32-character password slot
 };
 
 std::vector<std::uint8_t> file_list(const FrameOptions& o, bool iqr, std::uint16_t drive, std::uint32_t start,

@@ -1,7 +1,6 @@
 #include "server/listeners.hpp"
 
-#include "server/frontend_session.hpp"
-#include "station/frontend_call.hpp"
+#include "station/face_inbox.hpp"
 
 namespace slmp::server {
 
@@ -30,25 +29,6 @@ Listeners::Listeners(const station::Home& home, station::Station& station, const
     }
 }
 
-namespace {
-
-FrontEndStep step(frontends::Exchange& exchange, const station::FrontEndCall::Delivery& delivery) {
-    FrontEndStep s{false, exchange.consumed, std::move(exchange.response)};
-    s.delay = delivery.delay;
-    s.close = delivery.close;
-    s.reset = delivery.reset;
-    return s;
-}
-
-// One exchange reported (station/frontend_call.hpp): the command, whether the face knows it, the code answered.
-station::FrontEndCall::Delivery report(station::FrontEndCall& call, std::span<const std::uint8_t> request,
-                                       const frontends::Exchange& exchange) {
-    return call.finish(request, exchange.command, exchange.known, exchange.name, exchange.code,
-                       {reinterpret_cast<const std::uint8_t*>(exchange.response.data()), exchange.response.size()});
-}
-
-}  // namespace
-
 void Listeners::listen_face(const station::Home& home, station::Station& station, const config::ServerConfig& config,
                             const frontends::Settings& settings, const boost::asio::ip::address& bind) {
     const auto& face = *settings.face;
@@ -63,41 +43,19 @@ void Listeners::listen_face(const station::Home& home, station::Station& station
                                    face.port_fix(transport) + ") or stop the program using it");
     };
     if (settings.tcp) {
-        auto port = *settings.tcp;
-        SessionFactory factory = [&station, unit, port](station::StrandSocket socket,
-                                                        std::function<void(StreamSession*)> on_closed,
-                                                        std::function<std::size_t()>) -> std::shared_ptr<StreamSession> {
-            // The connection's own state (the host link's QQMR list) lives in its handler.
-            std::shared_ptr<frontends::SessionState> state = unit->new_session();
-            FrontEndHandler handler = [&station, unit, state](std::span<const std::uint8_t> pending, std::uint64_t connection,
-                                                              const protocol::Peer& peer) {
-                station::FrontEndCall call(station, unit->face().name(), connection, peer);
-                auto exchange = unit->stream(pending, state.get(), call.gate());
-                if (exchange.need_more) return FrontEndStep{true};
-                auto delivery = report(call, pending.first(exchange.consumed), exchange);
-                return step(exchange, delivery);
-            };
-            return std::make_shared<FrontEndSession>(std::move(socket), station, std::string(unit->face().log_name()),
-                                                     std::move(handler), port, std::move(on_closed));
+        InboxMaker face_inbox = [&station, unit](const protocol::Peer& peer, station::Feed*) {
+            return std::make_unique<station::FaceInbox>(station, *unit, peer);
         };
         try {
-            served.tcp = std::make_unique<TcpListener>(home, station, port, bind, std::move(factory));
+            served.tcp = std::make_unique<TcpListener>(home, station, *settings.tcp, bind, std::move(face_inbox),
+                                                       std::string(face.log_name()));
         } catch (const boost::system::system_error& e) {
-            throw fail(config::Transport::Tcp, port.port, e);
+            throw fail(config::Transport::Tcp, settings.tcp->port, e);
         }
     }
     if (settings.udp) {
-        // One session for the port, as an SLMP UDP port has: requests report it as their connection.
-        auto session = station.next_session_id();
-        DatagramHandler handler = [&station, unit, session](std::span<const std::uint8_t> datagram, const protocol::Peer& peer) {
-            station::FrontEndCall call(station, unit->face().name(), session, peer);
-            auto exchange = unit->datagram(datagram, call.gate());
-            auto delivery = report(call, datagram, exchange);
-            return DatagramAnswer{std::move(exchange.response), delivery.delay};
-        };
         try {
-            served.udp = std::make_unique<FrontEndUdpListener>(home, std::string(face.log_name()), settings.udp->port, bind,
-                                                               std::move(handler));
+            served.udp = std::make_unique<UdpListener>(home, station, *settings.udp, bind, unit);
         } catch (const boost::system::system_error& e) {
             throw fail(config::Transport::Udp, settings.udp->port, e);
         }

@@ -15,7 +15,6 @@
 #include "config/config.hpp"
 #include "config/frontend_config.hpp"
 #include "frontends/face.hpp"
-#include "server/frontend_udp_listener.hpp"
 #include "server/serial_port.hpp"
 #include "server/tcp_listener.hpp"
 #include "server/udp_listener.hpp"
@@ -51,7 +50,7 @@ private:
     struct Served {
         std::unique_ptr<frontends::Unit> unit;
         std::unique_ptr<TcpListener> tcp;
-        std::unique_ptr<FrontEndUdpListener> udp;
+        std::unique_ptr<UdpListener> udp;
     };
     void listen_face(const station::Home& home, station::Station& station, const config::ServerConfig& config,
                      const frontends::Settings& settings, const boost::asio::ip::address& bind);

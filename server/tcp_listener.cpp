@@ -10,21 +10,22 @@ namespace asio = boost::asio;
 using asio::ip::tcp;
 
 TcpListener::TcpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
-                         const asio::ip::address& bind, SessionFactory factory)
-    : home_(home), station_(station), config_(port), endpoint_(bind, port.port), acceptor_(home), factory_(std::move(factory)) {
+                         const asio::ip::address& bind, InboxMaker face_inbox, std::string face)
+    : home_(home),
+      station_(station),
+      config_(port),
+      endpoint_(bind, port.port),
+      acceptor_(home),
+      make_inbox_(std::move(face_inbox)),
+      face_(std::move(face)) {
     if (!config_.max_connections) config_.max_connections = station.engine().port().max_connections;
     // An SLMP connection in the instant timing mode reads, frames and writes on
     // a strand of its own, so several threads serve one busy station; its
     // requests are still served one at a time on the station's strand. The
-    // timing modes' waits and a front end's handlers touch the station
+    // timing modes' waits and another face's inbox touch the station
     // throughout: those connections stay on the station's strand.
-    own_strands_ = !factory_ && station.timing_mode() == config::TimingMode::Instant;
-    if (!factory_)
-        factory_ = [this](station::StrandSocket socket, std::function<void(StreamSession*)> on_closed,
-                          std::function<std::size_t()> connections) -> std::shared_ptr<StreamSession> {
-            return std::make_shared<TcpSession>(std::move(socket), home_, station_, config_, std::move(on_closed),
-                                                std::move(connections));
-        };
+    own_strands_ = !make_inbox_ && station.timing_mode() == config::TimingMode::Instant;
+    if (!make_inbox_) make_inbox_ = slmp_inbox(home_, station_, config_, [this] { return sessions_.size(); });
     listen();   // throws boost::system::system_error when the port cannot be had
     endpoint_ = acceptor_.local_endpoint();
 }
@@ -53,8 +54,8 @@ asio::awaitable<void> TcpListener::accept_loop() {
             continue;
         }
         if (over_address_cap(socket)) continue;   // the socket closes as it goes out of scope
-        auto session = factory_(std::move(socket), [this](StreamSession* s) { session_closed(s); },
-                                [this] { return sessions_.size(); });
+        auto session = std::make_shared<TcpSession>(std::move(socket), home_, station_, config_,
+                                                    [this](TcpSession* s) { session_closed(s); }, make_inbox_, face_);
         sessions_.emplace(session.get(), session);
         if (config_.max_connections_per_address > 0) ++sessions_per_address_[session->peer().address];
         session->start();
@@ -80,7 +81,7 @@ bool TcpListener::over_address_cap(const station::StrandSocket& socket) const {
     return true;
 }
 
-void TcpListener::session_closed(StreamSession* session) {
+void TcpListener::session_closed(TcpSession* session) {
     if (config_.max_connections_per_address > 0) {
         auto found = sessions_per_address_.find(session->peer().address);
         if (found != sessions_per_address_.end() && --found->second == 0) sessions_per_address_.erase(found);
@@ -120,10 +121,9 @@ void TcpListener::stop() {
 }
 
 void TcpListener::push_targets(std::vector<station::PushTarget>& targets) {
-    // Ondemand pushes are SLMP frames: a front end's connections (host link,
-    // JW-51CM) on a port of their own take none.
+    // Ondemand pushes are SLMP frames: another face's connections take none.
     for (auto& entry : sessions_)
-        if (auto* slmp = dynamic_cast<TcpSession*>(entry.second.get())) targets.push_back(slmp->push_target());
+        if (auto target = entry.second->push_target()) targets.push_back(std::move(*target));
 }
 
 }  // namespace slmp::server

@@ -13,7 +13,6 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
-#include "server/stream_session.hpp"
 #include "server/tcp_session.hpp"
 #include "station/station.hpp"
 
@@ -21,9 +20,10 @@ namespace slmp::server {
 
 class TcpListener {
 public:
-    // Serves SLMP (TcpSession) unless `factory` builds another protocol's sessions.
+    // Serves SLMP unless `face_inbox` makes another face's inboxes (`face`:
+    // its log name, server/tcp_session.hpp).
     TcpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
-                const boost::asio::ip::address& bind, SessionFactory factory = {});
+                const boost::asio::ip::address& bind, InboxMaker face_inbox = {}, std::string face = {});
 
     std::uint16_t port() const { return endpoint_.port(); }   // the bound port, also when 0 was asked for
     void stop();
@@ -37,7 +37,7 @@ private:
     void listen();
     void reopen();   // listen() again after the port was closed; logs instead of throwing
     boost::asio::awaitable<void> accept_loop();
-    void session_closed(StreamSession* session);
+    void session_closed(TcpSession* session);
     bool over_address_cap(const station::StrandSocket& socket) const;
 
     station::Home home_;
@@ -45,10 +45,11 @@ private:
     config::PortConfig config_;
     boost::asio::ip::tcp::endpoint endpoint_;
     boost::asio::ip::tcp::acceptor acceptor_;
-    SessionFactory factory_;
-    std::unordered_map<StreamSession*, std::shared_ptr<StreamSession>> sessions_;
+    InboxMaker make_inbox_;
+    std::string face_;
+    std::unordered_map<TcpSession*, std::shared_ptr<TcpSession>> sessions_;
     std::unordered_map<std::string, unsigned> sessions_per_address_;   // only with a per-address cap
-    bool own_strands_ = false;   // SLMP sessions read and write on strands of their own
+    bool own_strands_ = false;   // SLMP sessions in instant mode read and write on strands of their own
     bool stopping_ = false;
     bool refusing_ = false;
 };

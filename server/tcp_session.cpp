@@ -12,6 +12,42 @@ namespace asio = boost::asio;
 using station::StrandTask;
 using station::use_strand;
 
+namespace {
+
+// The client of an accepted connection and the port it reached ("?" when the
+// socket no longer knows); also turns Nagle off, as every session answers at once.
+protocol::Peer accepted_peer(station::StrandSocket& socket) {
+    boost::system::error_code ec;
+    protocol::Peer peer;
+    peer.transport = protocol::Transport::Tcp;
+    if (auto remote = socket.remote_endpoint(ec); ec) {
+        peer.address = "?";
+    } else {
+        peer.address = remote.address().to_string();
+        peer.port = remote.port();
+    }
+    peer.local_port = socket.local_endpoint(ec).port();
+    socket.set_option(boost::asio::ip::tcp::no_delay(true), ec);
+    return peer;
+}
+
+// When a connection's watchdog fires: `idle` after its last activity, or
+// `partial` after the first byte of a request still not whole, whichever is
+// first (a zero duration is off). `partial` in the answer says which one.
+struct Deadline {
+    std::chrono::steady_clock::time_point at = std::chrono::steady_clock::time_point::max();
+    bool partial = false;
+};
+Deadline next_deadline(std::chrono::steady_clock::time_point last_activity, std::chrono::milliseconds idle,
+                       std::optional<std::chrono::steady_clock::time_point> partial_since, std::chrono::milliseconds partial) {
+    Deadline d;
+    if (idle.count() > 0) d.at = last_activity + idle;
+    if (partial.count() > 0 && partial_since && *partial_since + partial < d.at) d = {*partial_since + partial, true};
+    return d;
+}
+
+}  // namespace
+
 protocol::DataCodePolicy to_policy(config::DataCode code) {
     switch (code) {
         case config::DataCode::Binary: return protocol::DataCodePolicy::Binary;
@@ -21,36 +57,49 @@ protocol::DataCodePolicy to_policy(config::DataCode code) {
     return protocol::DataCodePolicy::Auto;
 }
 
+InboxMaker slmp_inbox(station::Home home, station::Station& station, const config::PortConfig& port,
+                      std::function<std::size_t()> connections) {
+    return [home = std::move(home), &station, port, connections = std::move(connections)](const protocol::Peer& peer,
+                                                                                          station::Feed* feed) {
+        return std::make_unique<station::Inbox>(station, home, station.new_session(port), peer, to_policy(port.data_code),
+                                                feed, connections);
+    };
+}
+
 TcpSession::TcpSession(station::StrandSocket socket, station::Home home, station::Station& station,
-                       const config::PortConfig& port, std::function<void(StreamSession*)> on_closed,
-                       std::function<std::size_t()> connections)
+                       const config::PortConfig& port, std::function<void(TcpSession*)> on_closed,
+                       const InboxMaker& make_inbox, std::string face)
     : socket_(std::move(socket)),
       home_(std::move(home)),
       station_(station),
       idle_timeout_(port.idle_timeout_ms),
       partial_frame_timeout_(port.partial_frame_timeout_ms),
       deadline_timer_(socket_.get_executor()),
-      session_(station.new_session(port)),
-      on_closed_(std::move(on_closed)),
-      inbox_(station, home_, session_, peer_, to_policy(port.data_code), &feed_, std::move(connections)) {
+      face_(std::move(face)),
+      on_closed_(std::move(on_closed)) {
     peer_ = accepted_peer(socket_);
+    inbox_ = make_inbox(peer_, &feed_);
+    slmp_ = dynamic_cast<station::Inbox*>(inbox_.get());
+}
+
+std::string TcpSession::who() const {
+    return face_.empty() ? peer_.text() : face_ + ": " + peer_.text();
 }
 
 void TcpSession::start() {
-    station_.log().info("{} connected (connection {})", peer_.text(), session_.id);
+    const auto id = inbox_->connection();
+    station_.log().info("{} connected (connection {})", who(), id);
     last_activity_ = std::chrono::steady_clock::now();
     auto self = shared_from_this();
     std::weak_ptr<TcpSession> weak = self;
-    station_.activity().opened({session_.id, peer_, std::chrono::system_clock::now(), 0, [weak](const std::string& why) {
+    station_.activity().opened({id, peer_, std::chrono::system_clock::now(), 0, [weak](const std::string& why) {
                                     if (auto session = weak.lock()) session->close(why);
                                 }});
-    auto log_crash = station::log_exception(peer_.text() + " session failed", [self] { self->finish("internal error"); });
+    auto log_crash = station::log_exception(who() + " session failed", [self] { self->finish("internal error"); });
     asio::co_spawn(socket_.get_executor(), serve(), log_crash);
     if (idle_timeout_.count() > 0 || partial_frame_timeout_.count() > 0)
         asio::co_spawn(socket_.get_executor(), watch_deadlines(), log_crash);
 }
-
-void TcpSession::close() { close(std::string()); }
 
 // On the connection's strand: the caller may be the station's (the API, a
 // power cut, a Remote RESET, shutdown).
@@ -68,12 +117,13 @@ void TcpSession::close_now() {
     deadline_timer_.cancel();
 }
 
-station::PushTarget TcpSession::push_target() {
+std::optional<station::PushTarget> TcpSession::push_target() {
+    if (!slmp_) return std::nullopt;   // Ondemand pushes are SLMP frames
     std::weak_ptr<TcpSession> weak = shared_from_this();
-    const auto shape = inbox_.last_shape();
-    return {session_.id, peer_, shape.kind, shape.codec, [weak](std::vector<std::uint8_t> bytes) {
-                if (auto session = weak.lock()) session->push(std::move(bytes));
-            }};
+    const auto shape = slmp_->last_shape();
+    return station::PushTarget{slmp_->connection(), peer_, shape.kind, shape.codec, [weak](std::vector<std::uint8_t> bytes) {
+                                   if (auto session = weak.lock()) session->push(std::move(bytes));
+                               }};
 }
 
 // From the station's strand (an Ondemand push); the outbox is the connection's.
@@ -94,8 +144,9 @@ void TcpSession::finish(const std::string& why) {
     close_now();
     // The station's side of the goodbye: its activity and the listener's count.
     asio::dispatch(home_, [self = shared_from_this(), why] {
-        self->station_.log().info("{} disconnected (connection {}): {}", self->peer_.text(), self->session_.id, why);
-        self->station_.activity().closed(self->session_.id, why);
+        const auto id = self->inbox_->connection();
+        self->station_.log().info("{} disconnected (connection {}): {}", self->who(), id, why);
+        self->station_.activity().closed(id, why);
         self->on_closed_(self.get());
     });
 }
@@ -107,7 +158,7 @@ StrandTask<> TcpSession::serve() {
     std::array<std::uint8_t, 8192> chunk;
     for (;;) {
         boost::system::error_code ec;
-        if (!inbox_.waiting()) {   // else whole requests wait still: serve them before reading on
+        if (!inbox_->waiting()) {   // else whole requests wait still: serve them before reading on
             outbox.watch_hold();
             auto n = co_await socket_.async_read_some(asio::buffer(chunk), asio::redirect_error(use_strand, ec));
             if (outbox.hold_expired() && ec == asio::error::operation_aborted) ec = {};   // send what a coalescing hold kept
@@ -118,17 +169,17 @@ StrandTask<> TcpSession::serve() {
             }
             if (n > 0) {
                 last_activity_ = std::chrono::steady_clock::now();
-                inbox_.bytes().insert(inbox_.bytes().end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
-                inbox_.received();
+                inbox_->bytes().insert(inbox_->bytes().end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
+                inbox_->received();
             }
         }
         if (!socket_.is_open()) break;
-        co_await inbox_.serve();
+        co_await inbox_->serve();
         if (!socket_.is_open()) break;
-        auto& served = inbox_.served();
+        auto& served = inbox_->served();
         for (auto& [response, delivery] : served.responses) outbox.add(std::move(response), delivery);
         if (served.close) close_reason_ = served.close_reason;
-        note_pending(inbox_.pending(), served.consumed_a_frame);
+        note_pending(inbox_->pending(), served.consumed_a_frame);
         sending_ = true;
         push_pending_ = false;
         const bool at_once = outbox.send_now(ec);
@@ -189,7 +240,7 @@ StrandTask<> TcpSession::watch_deadlines() {
                 close_reason_ = "a started frame was not whole " + std::to_string(partial_frame_timeout_.count()) +
                                 " ms after its first byte (partial-frame timeout; " + std::to_string(pending_bytes_) +
                                 " byte(s) pending)";
-                station_.log().warn("{} connection {}: {}", peer_.text(), session_.id, close_reason_);
+                station_.log().warn("{} connection {}: {}", who(), inbox_->connection(), close_reason_);
             } else {
                 close_reason_ = "idle for " + std::to_string(idle_timeout_.count()) + " ms (idle timeout)";
             }

@@ -1,6 +1,7 @@
-// One TCP connection: it reads bytes into its inbox, which cuts frames from
-// the stream by their length field and has the station serve them when its
-// timing mode says (station/inbox.hpp), and writes the answers. A request
+// One TCP connection, whatever face it speaks: it reads bytes into its inbox,
+// which cuts requests from the stream and has the station serve them (SLMP:
+// when its timing mode says, station/inbox.hpp; another face: at once,
+// station/face_inbox.hpp), and writes the answers. A request
 // split over many segments is assembled and several requests in one segment
 // are all answered, in order. A watchdog closes silent connections
 // (idle timeout) and connections whose started frame stays incomplete
@@ -27,7 +28,6 @@
 #include "protocol/peer.hpp"
 #include "scenarios/faults.hpp"
 #include "server/socket_feed.hpp"
-#include "server/stream_session.hpp"
 #include "station/inbox.hpp"
 #include "station/station.hpp"
 
@@ -35,22 +35,31 @@ namespace slmp::server {
 
 class Outbox;
 
-class TcpSession final : public StreamSession, public std::enable_shared_from_this<TcpSession> {
+// Makes a connection's inbox once its peer is known; `feed` is the
+// connection's further bytes while an SLMP inbox waits on the clock.
+using InboxMaker =
+    std::function<std::unique_ptr<station::ConnectionInbox>(const protocol::Peer& peer, station::Feed* feed)>;
+// An SLMP port's.
+InboxMaker slmp_inbox(station::Home home, station::Station& station, const config::PortConfig& port,
+                      std::function<std::size_t()> connections);
+
+class TcpSession final : public std::enable_shared_from_this<TcpSession> {
 public:
     // Called on the station's home strand (the listener's accept loop).
+    // `face`: the face's log name before its log lines ("host link"; empty: SLMP).
     TcpSession(station::StrandSocket socket, station::Home home, station::Station& station,
-               const config::PortConfig& port, std::function<void(StreamSession*)> on_closed,
-               std::function<std::size_t()> connections);
+               const config::PortConfig& port, std::function<void(TcpSession*)> on_closed, const InboxMaker& make_inbox,
+               std::string face = {});
 
-    void start() override;
+    void start();
     // From any thread: the server at shutdown, the watchdog, the HTTP API or a
     // Remote RESET (`why` is logged).
-    void close() override;
-    void close(const std::string& why);
-    const protocol::Peer& peer() const override { return peer_; }
-    // Ondemand: this connection as a push target; its send() queues the bytes
-    // behind the responses already on their way and wakes the session's read.
-    station::PushTarget push_target();
+    void close(const std::string& why = {});
+    const protocol::Peer& peer() const { return peer_; }
+    // Ondemand: this connection as a push target (none when it is not SLMP);
+    // its send() queues the bytes behind the responses already on their way
+    // and wakes the session's read.
+    std::optional<station::PushTarget> push_target();
 
 private:
     station::StrandTask<> serve();
@@ -60,6 +69,7 @@ private:
     void resume_watchdog();
     void finish(const std::string& why);
     void push(std::vector<std::uint8_t> bytes);
+    std::string who() const;   // "host link: 127.0.0.1:40000" / "127.0.0.1:40000" for its log lines
 
     station::StrandSocket socket_;   // its executor: the connection's own strand, or the station's
     station::Home home_;   // the station's strand
@@ -71,16 +81,17 @@ private:
     std::optional<std::chrono::steady_clock::time_point> partial_since_;
     std::size_t pending_bytes_ = 0;
     station::StrandTimer deadline_timer_;
-    protocol::Session session_;
+    std::string face_;
     protocol::Peer peer_;   // the client, and the simulator's port it reached
     std::string close_reason_ = "closed by the client";
-    std::function<void(StreamSession*)> on_closed_;
+    std::function<void(TcpSession*)> on_closed_;
     bool closed_ = false;
     Outbox* outbox_ = nullptr;            // serve()'s, while it runs
     bool push_pending_ = false;                 // a push cancelled the read; send it
     bool sending_ = false;                      // serve() is writing (the watchdog waits meanwhile)
     SocketFeed feed_{socket_};   // the inbox's further bytes while it waits on the clock
-    station::Inbox inbox_;       // received bytes and how they are served (station/inbox.hpp)
+    std::unique_ptr<station::ConnectionInbox> inbox_;   // received bytes and how they are served
+    station::Inbox* slmp_ = nullptr;                    // inbox_ when it is SLMP's (pushes take its last shape)
 };
 
 protocol::DataCodePolicy to_policy(config::DataCode code);

@@ -4,6 +4,7 @@
 
 #include "server/tcp_session.hpp"
 #include "server/udp_delivery.hpp"
+#include "station/face_inbox.hpp"
 #include "station/log_exception.hpp"
 
 namespace slmp::server {
@@ -18,21 +19,23 @@ constexpr std::size_t kMaxPushPeers = 256;   // UDP peers an Ondemand push reach
 constexpr int kDatagramsPerTurn = 16;
 
 UdpListener::UdpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
-                         const asio::ip::address& bind)
+                         const asio::ip::address& bind, frontends::Unit* face)
     : station_(station),
+      face_(face),
       policy_(to_policy(port.data_code)),
       config_(port),
       session_(station.new_session(port)),
       socket_(home, udp::endpoint(bind, port.port)) {
     port_ = socket_.local_endpoint().port();
     socket_.non_blocking(true);   // a waiting datagram is read, and an answer sent, without an asynchronous operation
-    asio::co_spawn(home, serve(), station::log_exception("UDP port " + std::to_string(port_) + ": receive loop failed"));
+    const auto name = face_ ? std::string(face_->face().log_name()) + " UDP port " : std::string("UDP port ");
+    asio::co_spawn(home, serve(), station::log_exception(name + std::to_string(port_) + ": receive loop failed"));
 }
 
 station::StrandTask<> UdpListener::serve() {
     std::array<std::uint8_t, 65536> datagram;
     udp::endpoint sender;
-    const bool at_once = station_.serves_at_once();
+    const bool at_once = face_ || station_.serves_at_once();
     int turn = 0;   // datagrams served since the last asynchronous receive
     while (socket_.is_open()) {
         boost::system::error_code ec;
@@ -52,6 +55,10 @@ station::StrandTask<> UdpListener::serve() {
             continue;
         }
         auto input = std::span<const std::uint8_t>(datagram.data(), n);
+        if (face_) {
+            if (auto later = face_answer(input, peer_of(sender))) co_await send_later(sender, std::move(*later));
+            continue;
+        }
         if (at_once) {
             const auto peer = peer_of(sender);
             if (auto later = answer_now(input, sender, peer, station_.handle(input, policy_, session_, peer)))
@@ -99,6 +106,20 @@ std::optional<station::Handled> UdpListener::answer_now(std::span<const std::uin
     if (ec == asio::error::would_block || ec == asio::error::try_again) return handled;   // the send buffer is full
     if (ec) station_.log().debug("{} send failed: {}", peer.text(), ec.message());
     return std::nullopt;
+}
+
+std::optional<station::Handled> UdpListener::face_answer(std::span<const std::uint8_t> datagram,
+                                                         const protocol::Peer& peer) {
+    auto [exchange, delivery] = station::call_face(station_, *face_, nullptr, session_.id, peer, datagram, true);
+    if (exchange.response.empty()) {
+        station_.log().debug("{} UDP {}: datagram of {} byte(s) not answered", face_->face().log_name(), peer.text(),
+                             datagram.size());
+        return std::nullopt;
+    }
+    station::Handled answer;
+    answer.outcome.response.assign(exchange.response.begin(), exchange.response.end());
+    answer.delivery.delay = delivery.delay;   // the port's next datagram waits behind it, as on a busy unit
+    return answer;
 }
 
 station::StrandTask<> UdpListener::send_later(udp::endpoint sender, station::Handled handled) {

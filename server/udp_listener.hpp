@@ -1,5 +1,6 @@
-// A UDP port: one datagram is one request, answered to the sender's address
-// and port. No connection, so one protocol session serves the port.
+// A UDP port, SLMP's or another face's (frontends/face.hpp: the JW-51CM
+// computer link): one datagram is one request, answered to the sender's
+// address and port. No connection, so one protocol session serves the port.
 #pragma once
 
 #include <array>
@@ -17,8 +18,9 @@ namespace slmp::server {
 
 class UdpListener {
 public:
+    // Serves SLMP unless `face` is given: then that face's unit answers, at once in every timing mode.
     UdpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
-                const boost::asio::ip::address& bind);
+                const boost::asio::ip::address& bind, frontends::Unit* face = nullptr);
 
     std::uint16_t port() const { return port_; }
     void stop();
@@ -41,8 +43,11 @@ private:
     // The answer answer_now() returned, sent as its delivery asks.
     station::StrandTask<> send_later(boost::asio::ip::udp::endpoint sender, station::Handled handled);
     protocol::Peer peer_of(const boost::asio::ip::udp::endpoint& sender) const;
+    // Another face's answer to one datagram (none: not answered).
+    std::optional<station::Handled> face_answer(std::span<const std::uint8_t> datagram, const protocol::Peer& peer);
 
     station::Station& station_;
+    frontends::Unit* face_;   // null: SLMP
     protocol::DataCodePolicy policy_;
     config::PortConfig config_;   // its settings, for the sessions after a restart
     protocol::Session session_;

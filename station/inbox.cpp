@@ -15,11 +15,11 @@ RequestShape request_shape(std::span<const std::uint8_t> f) {
     return {FrameKind::E3, Codec::Binary};
 }
 
-Inbox::Inbox(Station& station, Home home, protocol::Session& session, const protocol::Peer& peer,
+Inbox::Inbox(Station& station, Home home, protocol::Session session, const protocol::Peer& peer,
              protocol::DataCodePolicy policy, Feed* feed, std::function<std::size_t()> connections)
     : station_(station),
       home_(std::move(home)),
-      session_(session),
+      session_(std::move(session)),
       peer_(peer),
       policy_(policy),
       feed_(feed),

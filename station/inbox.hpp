@@ -62,30 +62,48 @@ struct Served {
     bool consumed_a_frame = false;   // the partial-frame watchdog's reference moves
 };
 
-// One stream connection's received bytes and how they are served. Lives on
-// the connection's strand; in the timed modes that is the station's (the
-// transport's listener arranges it), in instant mode serve() hops there.
-class Inbox {
+// What a stream connection (server/tcp_session.hpp) needs of its received
+// bytes, whatever face it speaks: SLMP's Inbox below, or a protocol face's
+// (station/face_inbox.hpp). One session class serves them all.
+class ConnectionInbox {
 public:
+    virtual ~ConnectionInbox() = default;
+    virtual std::uint64_t connection() const = 0;   // the connection's id (logs, activity)
+    // A read just appended bytes to bytes().
+    virtual std::vector<std::uint8_t>& bytes() = 0;
+    virtual void received() {}
+    // Serves the whole requests it can now; what it served leaves bytes().
+    virtual StrandTask<> serve() = 0;
+    // What serve() left: answers to write, whether to close.
+    virtual Served& served() = 0;
+    // Whole requests still wait: serve() again once the answers are written, before reading on.
+    virtual bool waiting() const { return false; }
+    // Bytes received and not served (a request still incomplete): for the watchdog.
+    virtual std::size_t pending() const = 0;
+};
+
+// One SLMP stream connection's received bytes and how they are served. Lives
+// on the connection's strand; in the timed modes that is the station's (the
+// transport's listener arranges it), in instant mode serve() hops there.
+class Inbox final : public ConnectionInbox {
+public:
+    // `session`: the connection's protocol state (Station::new_session);
     // `feed`: the connection's further bytes while it waits on the clock;
     // `connections`: the port's open connections (commands per connection).
-    Inbox(Station& station, Home home, protocol::Session& session, const protocol::Peer& peer,
+    Inbox(Station& station, Home home, protocol::Session session, const protocol::Peer& peer,
           protocol::DataCodePolicy policy, Feed* feed, std::function<std::size_t()> connections);
 
-    // A read just appended bytes to bytes().
-    std::vector<std::uint8_t>& bytes() { return bytes_; }
-    void received();
+    std::uint64_t connection() const override { return session_.id; }
+    std::vector<std::uint8_t>& bytes() override { return bytes_; }
+    void received() override;
     // Serves the whole frames it can now, waiting on the clock as the timing
-    // mode says; what it served leaves bytes(). Then served() tells the
-    // transport what to write and whether to close.
-    StrandTask<> serve();
-    Served& served() { return served_; }
+    // mode says.
+    StrandTask<> serve() override;
+    Served& served() override { return served_; }
     // Whole requests still wait (their END, or a modelled time after answers
-    // that must leave first): call serve() again once the answers are written,
-    // before reading on.
-    bool waiting() const { return waiting_; }
-    // Bytes received and not served (a frame still incomplete): for the watchdog.
-    std::size_t pending() const { return bytes_.size(); }
+    // that must leave first).
+    bool waiting() const override { return waiting_; }
+    std::size_t pending() const override { return bytes_.size(); }
     // The last request's frame shape, for pushes.
     RequestShape last_shape() const { return last_shape_; }
 
@@ -107,7 +125,7 @@ private:
 
     Station& station_;
     Home home_;
-    protocol::Session& session_;
+    protocol::Session session_;
     const protocol::Peer& peer_;
     protocol::DataCodePolicy policy_;
     Feed* feed_;

@@ -33,6 +33,11 @@ const CommandSpec kCommands[] = {
     {"unlock", "PASSWORD", "1630 Remote Password Unlock", {}, run_unlock},
     {"ondemand", "--wait", "2101 Ondemand: wait for --count pushes (default 1), --timeout each; over UDP a 0101 "
                            "first makes the simulator know this client", {"wait", "count"}, run_ondemand},
+    {"probe", "--out FILE", "find what the port does (read-only unless --allow-writes RANGES) and write it as a "
+                            "slmp-sim profile (docs/twin.md)", {"out", "allow-writes", "record", "silence"}, run_probe},
+    {"diff", "--against HOST:PORT", "send generated requests (every command, limits +-1, bad devices, 3E/4E, "
+                                    "binary/ASCII) to both servers and list every difference (docs/twin.md)",
+                                    {"against", "profile", "record", "silence"}, run_diff},
 };
 // clang-format on
 

@@ -53,5 +53,7 @@ void run_selftest(Invocation& in);
 void run_lock(Invocation& in);
 void run_unlock(Invocation& in);
 void run_ondemand(Invocation& in);
+void run_probe(Invocation& in);
+void run_diff(Invocation& in);
 
 }  // namespace slmp::cli

@@ -23,6 +23,11 @@ struct ConnectionError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// slmp diff: the two servers answered differently (exit status 1, as an end code).
+struct DifferenceError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 // The PLC answered with a non-zero end code.
 struct EndCodeError : std::runtime_error {
     EndCodeError(std::uint16_t code, std::optional<protocol::client::ErrorInfo> info, const std::string& message)

@@ -76,8 +76,8 @@ void Link::send(std::span<const std::uint8_t> bytes, Clock::time_point deadline)
     if (ec) throw ConnectionError("sending to " + peer() + " failed: " + ec.message());
 }
 
-std::vector<std::uint8_t> Link::receive(Clock::time_point deadline) {
-    std::vector<std::uint8_t> buffer(udp_ ? 65536 : 8192);
+Link::Received Link::try_receive(Clock::time_point deadline, std::vector<std::uint8_t>& bytes) {
+    bytes.assign(udp_ ? 65536 : 8192, 0);
     error_code ec;
     std::size_t size = 0;
     bool done = false;
@@ -86,18 +86,31 @@ std::vector<std::uint8_t> Link::receive(Clock::time_point deadline) {
         size = n;
         done = true;
     };
-    if (udp_) udp_socket_.async_receive(asio::buffer(buffer), handler);
-    else tcp_.async_read_some(asio::buffer(buffer), handler);
-    if (!run_until(done, deadline))
-        throw ConnectionError("no response from " + peer() +
-                              " within the timeout (check --port, the frame type --4e and the data code --ascii "
-                              "against the PLC's settings; a PLC ignores frames it does not accept)");
-    if (ec == asio::error::eof) throw ConnectionError(peer() + " closed the connection");
+    if (udp_) udp_socket_.async_receive(asio::buffer(bytes), handler);
+    else tcp_.async_read_some(asio::buffer(bytes), handler);
+    if (!run_until(done, deadline)) {
+        bytes.clear();
+        return Received::Silence;
+    }
+    bytes.resize(size);
+    if (ec == asio::error::eof || ec == asio::error::connection_reset) return Received::Closed;
     if (ec == asio::error::connection_refused)
         throw ConnectionError(peer() + " refused the datagram (nothing listens on that UDP port; check --port)");
     if (ec) throw ConnectionError("receiving from " + peer() + " failed: " + ec.message());
-    buffer.resize(size);
-    return buffer;
+    return Received::Data;
+}
+
+std::vector<std::uint8_t> Link::receive(Clock::time_point deadline) {
+    std::vector<std::uint8_t> bytes;
+    switch (try_receive(deadline, bytes)) {
+        case Received::Data: return bytes;
+        case Received::Silence:
+            throw ConnectionError("no response from " + peer() +
+                                  " within the timeout (check --port, the frame type --4e and the data code --ascii "
+                                  "against the PLC's settings; a PLC ignores frames it does not accept)");
+        case Received::Closed: break;
+    }
+    throw ConnectionError(peer() + " closed the connection");
 }
 
 }  // namespace slmp::cli

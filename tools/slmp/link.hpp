@@ -31,6 +31,10 @@ public:
     void send(std::span<const std::uint8_t> bytes, Clock::time_point deadline);
     // TCP: whatever has arrived (at least one byte); UDP: exactly one datagram.
     std::vector<std::uint8_t> receive(Clock::time_point deadline);
+    // The same without throwing on what a probe wants to see: nothing before the
+    // deadline (Silence) or the peer closing or resetting the connection (Closed).
+    enum class Received : std::uint8_t { Data, Silence, Closed };
+    Received try_receive(Clock::time_point deadline, std::vector<std::uint8_t>& bytes);
     bool datagram() const { return udp_; }
     std::string peer() const;
 

@@ -64,6 +64,8 @@ int main(int argc, char** argv) {
             extra["subcommand"] = word_hex(e.error_info->subcommand, 4);
         }
         return fail(output, kEndCode, "end_code", std::string("the PLC answered end code ") + e.what(), extra);
+    } catch (const DifferenceError& e) {
+        return fail(output, kEndCode, "difference", e.what());
     } catch (const ConnectionError& e) {
         return fail(output, kConnection, "connection", e.what());
     } catch (const std::exception& e) {

@@ -67,7 +67,7 @@ std::optional<std::chrono::milliseconds> parse_duration(const std::string& text)
 
 std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
     Options o;
-    std::string host = o.target.host, timeout = "3s", interval = "1s";
+    std::string host = o.target.host, timeout = "3s", interval = "1s", silence;
     std::string network, station, module_io, multidrop, serial;
     unsigned long count = 0;
     bool udp = false, ascii = false, e4 = false, iqr = false, octal_xy = false;
@@ -102,7 +102,13 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         ("wait", po::bool_switch(&o.wait), "ondemand: wait for Ondemand (2101) pushes and print each (--count N, default 1)")
         ("force", po::bool_switch(&o.force), "run/pause: mode 0003, even if another client holds STOP/PAUSE")
         ("clear", po::value(&o.clear), "run: clear devices first: none (default), nonlatch, all")
-        ("file-password", po::value(&o.file_password), "file: the file's password (Q/L: up to 4 characters, iQ-R: 6-32)");
+        ("file-password", po::value(&o.file_password), "file: the file's password (Q/L: up to 4 characters, iQ-R: 6-32)")
+        ("out", po::value(&o.out), "probe: write the probed profile to this file")
+        ("allow-writes", po::value(&o.allow_writes), "probe: scratch ranges it may write and restores (D9000-D9999,M9000-M9999)")
+        ("record", po::value(&o.record), "probe, diff: save every exchange as a recording (JSON lines, slmp-replay reads it)")
+        ("against", po::value(&o.against), "diff: HOST:PORT of the server to compare with (same transport)")
+        ("profile", po::value(&o.profile), "diff: the profile (name or file) whose limits and sizes the requests test")
+        ("silence", po::value(&silence), "probe, diff: no answer for this long counts as silence (default: --timeout)");
     po::options_description hidden;
     hidden.add_options()
         ("command", po::value(&o.command))
@@ -153,6 +159,7 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         if (octal_xy) o.frame.numbering.xy = devicemodel::Radix::Oct;
         if (vm.count("password")) o.password = vm["password"].as<std::string>();
         if (vm.count("interval")) o.interval = duration_option("interval", interval);
+        if (vm.count("silence")) o.silence = duration_option("silence", silence);
         if (vm.count("count")) {
             if (count == 0) throw UsageError("--count must be at least 1");
             o.count = count;

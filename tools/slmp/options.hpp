@@ -34,6 +34,12 @@ struct Options {
     bool force = false;                     // run, pause
     std::string clear = "none";             // run
     std::string file_password;              // file: the file's password (empty: none)
+    std::string out;                        // probe: the profile file to write
+    std::string allow_writes;               // probe: scratch ranges it may write (D9000-D9999,M9000-M9999)
+    std::string record;                     // probe, diff: the exchanges as a recording (JSON lines)
+    std::string against;                    // diff: HOST:PORT of the second server
+    std::string profile;                    // diff: the profile whose limits and sizes the requests probe
+    std::optional<std::chrono::milliseconds> silence;   // probe, diff: how long no answer counts as silence
     std::vector<std::string> given;         // names of the subcommand options actually given
 };
 
