@@ -39,11 +39,7 @@ void Runtime::scan(DeviceMemory& memory, TimePoint now, const CalendarTime& cale
         last_scan_ = now;
     }
     auto elapsed = duration_cast<microseconds>(std::max(now - last_scan_, TimePoint::duration::zero()));
-    last_scan_ = now;
-    auto since = duration_cast<microseconds>(now - power_on_);
-    special::publish_clock_pulses(memory, since);
-    special::publish_second_counter(memory, since);
-    special::publish_calendar(memory, calendar, family_);
+    publish_clocks(memory, now, calendar);
     if (state_.state() != RunState::Run) return;   // STOP/PAUSE: nothing times
 
     timers_.run(memory, elapsed);
@@ -54,6 +50,33 @@ void Runtime::scan(DeviceMemory& memory, TimePoint now, const CalendarTime& cale
         special::publish_first_scan(memory, false);
         return;
     }
+    record_scan_time(memory, elapsed);
+}
+
+void Runtime::scan_repeated(DeviceMemory& memory, TimePoint now, const CalendarTime& calendar, microseconds per_scan,
+                            std::uint64_t count) {
+    if (count == 0 || !clock_started_) return;
+    publish_clocks(memory, now, calendar);
+    if (state_.state() != RunState::Run) return;
+    timers_.run(memory, per_scan * static_cast<std::int64_t>(count));
+    record_scan_time(memory, per_scan);   // min and max of equal times: once is all of them
+}
+
+std::optional<std::uint64_t> Runtime::scans_until_due(const DeviceMemory& memory, microseconds per_scan) const {
+    if (state_.state() != RunState::Run) return std::nullopt;   // nothing times
+    if (first_scan_) return 1;
+    return timers_.scans_until_due(memory, per_scan);
+}
+
+void Runtime::publish_clocks(DeviceMemory& memory, TimePoint now, const CalendarTime& calendar) {
+    last_scan_ = now;
+    auto since = duration_cast<microseconds>(now - power_on_);
+    special::publish_clock_pulses(memory, since);
+    special::publish_second_counter(memory, since);
+    special::publish_calendar(memory, calendar, family_);
+}
+
+void Runtime::record_scan_time(DeviceMemory& memory, microseconds elapsed) {
     scan_current_ = elapsed;
     if (!scan_min_) scan_initial_ = elapsed;
     scan_min_ = scan_min_ ? std::min(*scan_min_, elapsed) : elapsed;

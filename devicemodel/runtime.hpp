@@ -60,6 +60,19 @@ public:
 
     // One scan at time `now` (steady) with the wall-clock calendar.
     void scan(DeviceMemory& memory, TimePoint now, const CalendarTime& calendar);
+    // `count` more scans of `per_scan` each, the last at `now`, with nothing
+    // but the scans in between (no request, no program, no scenario): the
+    // same values as `count` calls of scan() — clocks and the calendar from
+    // the last one, timers moved by the sum (TimerBank::scans_until_due), the
+    // scan-time statistics as `count` scans of `per_scan`. Only after a
+    // scan(), so edges and the first scan are behind. How an idle station
+    // catches up (station/scan_loop.hpp).
+    void scan_repeated(DeviceMemory& memory, TimePoint now, const CalendarTime& calendar,
+                       std::chrono::microseconds per_scan, std::uint64_t count);
+    // Right after a scan: how many more scans of `per_scan` each until one
+    // that is not a repetition of the last (TimerBank::scans_until_due, or the
+    // first scan after a change of state); nullopt: none ever.
+    std::optional<std::uint64_t> scans_until_due(const DeviceMemory& memory, std::chrono::microseconds per_scan) const;
     TimePoint now() const { return last_scan_; }
     // The scan time statistics SD520-SD525 publish (none before the second scan in RUN).
     struct ScanTimes {
@@ -97,6 +110,8 @@ private:
     template <typename Change>
     RemoteRefusal change(DeviceMemory& memory, Change&& operation);
     void settle(DeviceMemory& memory, RunState before);
+    void publish_clocks(DeviceMemory& memory, TimePoint now, const CalendarTime& calendar);
+    void record_scan_time(DeviceMemory& memory, std::chrono::microseconds elapsed);
     void power_on(DeviceMemory& memory);
     void clear(DeviceMemory& memory, ClearScope scope);
 

@@ -51,6 +51,43 @@ void TimerBank::run(DeviceMemory& memory, std::chrono::microseconds elapsed) {
     for (auto& c : counters_) run_counter(memory, c);
 }
 
+std::optional<std::uint64_t> TimerBank::scans_until_due(const DeviceMemory& memory, std::chrono::microseconds per_scan) const {
+    std::optional<std::uint64_t> due;
+    auto sooner = [&due](std::uint64_t scans) { due = due ? std::min(*due, scans) : scans; };
+    for (const auto& t : timers_) {
+        const auto p = parts_of(t.range.area);
+        const auto size = memory.size(t.range.area);
+        const auto base = std::max<std::int64_t>(1, t.range.base.count());
+        for (std::uint32_t i = 0; i < t.range.count && t.range.first + i < size; ++i) {
+            const auto n = t.range.first + i;
+            const std::uint64_t value = memory.value(*p.value, n);
+            const bool contact = memory.bit(*p.contact, n);
+            if (!memory.bit(*p.coil, n)) {
+                // The next scan resets what a coil-off timer still holds.
+                if (t.timing[i] || t.remainder_us[i] || (!retentive(t.range.area) && (value || contact))) return 1;
+                continue;
+            }
+            if (!t.timing[i] || value > t.range.preset || contact != (value >= t.range.preset)) return 1;
+            if (value == t.range.preset || per_scan.count() <= 0) continue;   // done: only the remainder moves
+            // The scan at which the value reaches the preset turns the contact on.
+            const auto needed = static_cast<std::int64_t>(t.range.preset - value) * base - t.remainder_us[i];
+            sooner(static_cast<std::uint64_t>((needed + per_scan.count() - 1) / per_scan.count()));
+        }
+    }
+    for (const auto& c : counters_) {
+        const auto p = parts_of(c.range.area);
+        const auto size = memory.size(c.range.area);
+        for (std::uint32_t i = 0; i < c.range.count && c.range.first + i < size; ++i) {
+            const auto n = c.range.first + i;
+            const std::uint64_t value = memory.value(*p.value, n);
+            if (memory.bit(*p.coil, n) != static_cast<bool>(c.coil_before[i]) ||
+                memory.bit(*p.contact, n) != (value >= c.range.preset) || value > max_value(c.range.area))
+                return 1;
+        }
+    }
+    return due;
+}
+
 void TimerBank::run_timer(DeviceMemory& memory, Timer& t, std::chrono::microseconds elapsed) {
     const auto p = parts_of(t.range.area);
     const auto size = memory.size(t.range.area);

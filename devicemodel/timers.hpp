@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -29,6 +30,15 @@ public:
     void run(DeviceMemory& memory, std::chrono::microseconds elapsed);
     // STOP/PAUSE or a device clear: edges and carried remainders start afresh.
     void reset_tracking();
+    // Right after run(): how many more scans of `per_scan` each until one
+    // that changes more than a running timer's current value (a contact that
+    // turns on, a counter's edge, a coil turned on or off since, a value a
+    // client wrote past the preset); nullopt when no such scan ever comes.
+    // Until then a scan only adds to timing values, and run() with the sum of
+    // those scans' times gives exactly what they would give one by one (the
+    // remainder is carried, the preset and maximum only clamp), which is how
+    // an idle station skips them (station/scan_loop.hpp).
+    std::optional<std::uint64_t> scans_until_due(const DeviceMemory& memory, std::chrono::microseconds per_scan) const;
 
 private:
     struct Timer {

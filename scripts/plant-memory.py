@@ -9,7 +9,12 @@ any free port each, or on --first-port + 0, 1, ...; 127.0.0.1), then reports:
   rss_idle_mib      the process's RSS once ready, and per station
   private_dirty_idle_mib  its private dirty memory then (/proc/PID/smaps_rollup):
                     what the plant really costs, without the binary's shared pages
-  cpu_idle_percent  CPU the idle plant uses over 3 s (the scans)
+  cpu_idle_percent  CPU the idle plant uses over --idle-seconds (default 3), from
+                    /proc/PID/stat (utime + stime); idle stations sleep (docs/timing.md,
+                    "What wakes a station"), so this is what is left
+  (--scenario-stations N: N of them run a scenario meanwhile, so scan every scan time)
+  wakeups_per_s     scan-loop wake-ups a second over that time, summed over the stations
+                    (GET /api/stations "wakeups"; absent from builds without it)
   rss_written_mib   RSS after K stations had every word of D, W, R, ZR and every
                     bit of M, B written non-zero over HTTP, and the growth per such station
 Nothing is asserted: this is a measurement for closing notes.
@@ -40,6 +45,12 @@ def cpu_ticks(pid):
         fields = f.read().rsplit(")", 1)[1].split()
     return int(fields[11]) + int(fields[12])
 
+def total_wakeups(port):
+    stations = json.load(urllib.request.urlopen(f"http://127.0.0.1:{port}/api/stations"))
+    if not stations or "wakeups" not in stations[0]:
+        return None
+    return sum(s["wakeups"] for s in stations)
+
 def put(port, station, address, values, view):
     body = json.dumps({"values": values}).encode()
     url = f"http://127.0.0.1:{port}/api/stations/{station}/devices/{address}?as={view}"
@@ -55,6 +66,9 @@ def main():
     ap.add_argument("--first-port", type=int, default=0,
                     help="TCP ports FIRST, FIRST+1, ... (as a real plant's \"20000+i\"); default: any free port each, "
                          "which costs the kernel a search of its bind table per station (~35 s for 10 000)")
+    ap.add_argument("--idle-seconds", type=float, default=3, help="how long idle CPU is measured")
+    ap.add_argument("--scenario-stations", type=int, default=0,
+                    help="stations s1..sN run a ramp scenario (they scan every scan time) while idle CPU is measured")
     ap.add_argument("--binary", default="build/server/slmp-sim")
     args = ap.parse_args()
 
@@ -83,9 +97,18 @@ def main():
                 http = json.load(f)["http"]
             rss_idle = rss_kib(proc.pid)
             dirty_idle = private_dirty_kib(proc.pid)
+            if args.scenario_stations:
+                ramp = {"stations": [f"s{i}" for i in range(1, args.scenario_stations + 1)],
+                        "scenario": {"name": "ramp", "timeline": {"steps": [
+                            {"at_ms": 0, "ramp": "D0", "from": 0, "to": 1000, "over_ms": 600000}]}}}
+                req = urllib.request.Request(f"http://127.0.0.1:{http}/api/plant/scenarios",
+                                             data=json.dumps(ramp).encode(), method="POST")
+                urllib.request.urlopen(req).read()
+            wakeups = total_wakeups(http)
             ticks = cpu_ticks(proc.pid)
-            time.sleep(3)
-            cpu_idle = (cpu_ticks(proc.pid) - ticks) / os.sysconf("SC_CLK_TCK") / 3 * 100
+            time.sleep(args.idle_seconds)
+            cpu_idle = (cpu_ticks(proc.pid) - ticks) / os.sysconf("SC_CLK_TCK") / args.idle_seconds * 100
+            wakeups_after = total_wakeups(http)
             info = json.load(urllib.request.urlopen(f"http://127.0.0.1:{http}/api/stations/s1/info"))
             sizes = info["device_sizes"]
             for k in range(1, args.written + 1):
@@ -107,7 +130,9 @@ def main():
         "rss_idle_kib_per_station": round(rss_idle / args.stations, 1),
         "private_dirty_idle_mib": round(dirty_idle / 1024, 1),
         "private_dirty_idle_kib_per_station": round(dirty_idle / args.stations, 1),
+        "scenario_stations": args.scenario_stations,
         "cpu_idle_percent": round(cpu_idle, 1),
+        "wakeups_per_s": None if wakeups is None else round((wakeups_after - wakeups) / args.idle_seconds, 1),
         "written_stations": args.written,
         "rss_written_mib": round(rss_written / 1024, 1),
         "rss_kib_per_written_station": round((rss_written - rss_idle) / max(1, args.written), 1),

@@ -117,6 +117,10 @@ void CpuProgram::reload() {
     }
 }
 
+bool CpuProgram::running() const {
+    return execution_ && cpu_.runtime().state() == RunState::Run;
+}
+
 void CpuProgram::execute() {
     if (!execution_ || cpu_.runtime().state() != RunState::Run) return;
     auto& memory = cpu_.memory();

@@ -31,6 +31,8 @@ public:
     CpuProgram& operator=(const CpuProgram&) = delete;
 
     bool loaded() const { return execution_.has_value(); }
+    // Loaded and the CPU in RUN: it executes every scan (the scan loop never sleeps then).
+    bool running() const;
     const program::Program* program() const { return loaded() ? &execution_->program() : nullptr; }
     const config::ProgramConfig& config() const { return config_; }
     const std::vector<std::string>& warnings() const { return warnings_; }

@@ -10,6 +10,7 @@ FrontEndCall::FrontEndCall(Station& station, scenarios::Protocol protocol, std::
                            const protocol::Peer& peer)
     : station_(station), protocol_(protocol), connection_(connection), peer_(peer),
       started_(std::chrono::steady_clock::now()) {
+    station_.catch_up();   // a sleeping scan loop first runs the scans due by now
     station_.activity().request_starting();   // the scan's writes so far are not this request's
 }
 
@@ -42,6 +43,7 @@ FrontEndCall::Delivery FrontEndCall::finish(std::span<const std::uint8_t> reques
                           plan_.decision.fired};
     station_.scenario().frontend_recorded(record);
     station_.activity().frontend_request(record);
+    station_.touched();   // the request may have started a timer or changed the state
     return delivery;
 }
 

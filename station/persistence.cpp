@@ -38,6 +38,7 @@ void Persistence::restore() {
 
 bool Persistence::save(std::string_view why) {
     try {
+        if (before_save) before_save();
         auto started = std::chrono::steady_clock::now();
         store_.save(devicemodel::encode_snapshot(cpu_.memory(), cpu_.profile().name));
         if (units)

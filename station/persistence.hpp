@@ -37,6 +37,9 @@ public:
     // device memory, in units.bin: what save() writes (nullopt: nothing to
     // save, the file stays), and what was saved last (nullopt: none).
     std::function<std::optional<std::vector<std::uint8_t>>()> units;
+    // Called before each save: the scan loop catches up, so a sleeping
+    // station saves what a scanning one would (ScanLoop::catch_up).
+    std::function<void()> before_save;
     std::optional<std::vector<std::uint8_t>> load_units() const { return units_store_.load(); }
     const std::filesystem::path& units_file() const { return units_store_.file(); }
 

@@ -94,6 +94,8 @@ public:
     void scanned(std::chrono::steady_clock::time_point now);
 
     bool active() const { return !runners_.empty() || !recorders_.empty(); }
+    // A scenario runs: it acts at every scan (timelines, triggers, rungs, fault windows).
+    bool running() const { return !runners_.empty(); }
     // Every fault: how often it matched and fired (for logs and the HTTP API).
     std::vector<scenarios::FaultStats> fault_stats() const;
     // One log line per fault that fired, at shutdown.

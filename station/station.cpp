@@ -75,8 +75,10 @@ void Station::start_cpu_runtime(const station::Home& home) {
                                        config_.clock_frozen);
     program_ = std::make_unique<CpuProgram>(cpu_, config_.cpu.program, *log_);
     scan_->run_program(program_.get());
+    scan_->needs_every_scan([this] { return scenario_.running(); });
     if (!config_.persistence.state_dir.empty()) {
         persistence_ = std::make_unique<Persistence>(home, cpu_, config_.persistence, *log_);
+        persistence_->before_save = [this] { catch_up(); };
         persistence_->restore();
         drive_state_ = std::make_unique<DriveState>(config_.persistence.state_dir, cpu_.drives(), cpu_.profile().name, *log_);
         drive_state_->restore();
@@ -88,12 +90,21 @@ void Station::start_cpu_runtime(const station::Home& home) {
     });
 }
 
+void Station::catch_up() {
+    if (scan_) scan_->catch_up();
+}
+
+void Station::touched() {
+    if (scan_) scan_->touched();
+}
+
 void Station::start() {
     if (scan_) scan_->start();
     if (persistence_) persistence_->start();
 }
 
 void Station::stop() {
+    catch_up();   // the last snapshot holds what a scan now would show
     if (scan_) scan_->stop();
     scenario_.log_summary();
     if (persistence_) {
@@ -215,6 +226,10 @@ StrandTask<> Station::wait_on_clock(std::chrono::milliseconds timer) {
 
 Handled Station::serve(protocol::Request request, std::span<const std::uint8_t> input, protocol::Session& session,
                        const protocol::Peer& peer, const Service* service) {
+    // A sleeping scan loop first runs the scans due by now; the request may
+    // start a timer or change the state, so the loop looks again after it.
+    catch_up();
+    TouchedAtExit touch_after{*this};
     activity_.request_starting();
     session.file_owner = protocol::lock_owner(peer, session.id);   // UDP: each peer its own (docs/files.md)
     auto started = std::chrono::steady_clock::now();
@@ -310,6 +325,7 @@ bool wanted(const PushTarget& t, const std::string& to) {
 }  // namespace
 
 std::vector<Station::Pushed> Station::ondemand(const scenarios::OndemandAction& action, const std::string& why) {
+    catch_up();
     const auto& spec = *action.first.spec;
     const auto name = devicemodel::format_address(action.first, cpu_.profile().numbering);
     if (!cpu_.memory().contains(spec.area, action.first.number, action.points))
@@ -369,11 +385,8 @@ Ticket Station::schedule(std::vector<std::uint8_t> frame, protocol::DataCodePoli
     ticket.request = engine_.decode(ticket.bytes, policy, session.own, session.routed);
     const auto& request = ticket.request;
     if (!timing_ || !scan_ || !request.complete() || !request.has_command) return ticket;
-    const auto& clock = scan_->clock();
     // The next END after the arrival in CPU time: a running clock's scan covers period × speed of it.
-    const auto cpu_period = clock.frozen() ? std::chrono::duration_cast<microseconds>(scan_->period())
-                                           : std::chrono::duration_cast<microseconds>(scan_->period() * clock.speed());
-    const auto next_end = scan_->last_end() + cpu_period;
+    const auto next_end = scan_->last_end() + scan_->cpu_period();
     const auto scan_wait = next_end > arrival ? std::chrono::duration_cast<microseconds>(next_end - arrival) : microseconds{0};
     // A request a module passes on waits for no END here: its time is the passing on (docs/timing.md).
     const auto modelled = timing_->modelled(request, request.elsewhere ? microseconds{0} : scan_wait);

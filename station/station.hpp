@@ -183,6 +183,12 @@ public:
 
     // The scan cycle and its virtual clock (station/scan_loop.hpp); null in a bare station.
     ScanLoop* scan_loop() { return scan_.get(); }
+    // Before anything outside the station's own requests reads or changes it
+    // (the HTTP API, a front end): the scans due by now run
+    // (ScanLoop::catch_up). After something changed it: touched() wakes the
+    // scan loop at the next scan (ScanLoop::touched). No-ops in a bare station.
+    void catch_up();
+    void touched();
     // When requests are served (docs/timing.md). Instant in a bare station.
     // With end_of_scan a request waits for the END after its arrival (or its
     // monitoring timer), so it executes at END; with model, for schedule()'s time.
@@ -216,6 +222,11 @@ public:
     bool runs(const scenarios::Scenario& s) const;
 
 private:
+    // Calls touched() when the scope that may change the station ends, on every path.
+    struct TouchedAtExit {
+        Station& station;
+        ~TouchedAtExit() { station.touched(); }
+    };
     void start_cpu_runtime(const station::Home& home);          // "cpu" parameters, scan cycle, state directory
     std::vector<scenarios::Scenario> load_scenarios();
     void start_scenarios(std::vector<scenarios::Scenario> list);

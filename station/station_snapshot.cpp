@@ -164,6 +164,7 @@ std::vector<devicemodel::Cpu*> Station::all_cpus() {
 }
 
 StationSnapshot Station::snapshot() {
+    catch_up();
     StationSnapshot s;
     for (auto* cpu : all_cpus()) s.cpus.push_back(take(*cpu));
     s.scenarios = scenario_.scenario_groups();
@@ -178,6 +179,8 @@ StationSnapshot Station::snapshot() {
 }
 
 void Station::restore(const StationSnapshot& s, bool drop_connections) {
+    catch_up();
+    TouchedAtExit touch_after{*this};
     auto cpus = all_cpus();
     if (s.cpus.size() > cpus.size())
         throw config::ConfigError("the snapshot holds " + std::to_string(s.cpus.size()) + " CPUs and this station " +

@@ -6,6 +6,7 @@
 //
 // Running, CPU time = the time at the last change + real time since × speed;
 // frozen, it moves only by advance(). It never depends on when a scan ran.
+// The real time comes from the host's steady clock, or from a test's fake one.
 #pragma once
 
 #include <chrono>
@@ -17,14 +18,21 @@ public:
     using TimePoint = std::chrono::steady_clock::time_point;
     using Duration = std::chrono::steady_clock::duration;
 
-    explicit VirtualClock(double speed = 1, bool frozen = false);
+    using RealTime = TimePoint (*)();   // the host's steady clock, or a test's
+
+    explicit VirtualClock(double speed = 1, bool frozen = false, RealTime real = &std::chrono::steady_clock::now);
 
     TimePoint now() const;
+    // The host's steady time at which a running clock shows `cpu_time` (never
+    // earlier: rounded up), for a timer that wakes then. Frozen: max().
+    TimePoint real_time_of(TimePoint cpu_time) const;
     // CPU time since the clock was made (what GET /api/clock reports).
     Duration elapsed() const { return now() - origin_; }
     // The calendar the CPU shows (SD210-SD216): the host's time when the clock
     // was made, moved on by CPU time, so a frozen clock stops the calendar too.
-    std::chrono::system_clock::time_point calendar() const;
+    std::chrono::system_clock::time_point calendar() const { return calendar_at(now()); }
+    // The calendar at CPU time `cpu_time` (a scan's instant).
+    std::chrono::system_clock::time_point calendar_at(TimePoint cpu_time) const;
 
     bool frozen() const { return frozen_; }
     double speed() const { return speed_; }
@@ -32,10 +40,14 @@ public:
     void freeze();
     void advance(Duration by);     // frozen: CPU time moves by exactly `by`
     void set(TimePoint cpu_time);  // a restored snapshot's time; the mode stays
+    // The calendar shows `shows` now and moves on from there with CPU time
+    // (tests pin it, so two clocks show the same calendar).
+    void set_calendar(std::chrono::system_clock::time_point shows);
 
 private:
     void rebase();
 
+    RealTime real_;
     TimePoint origin_;
     std::chrono::system_clock::time_point calendar_origin_;
     TimePoint base_cpu_;    // CPU time at the last change of mode or speed

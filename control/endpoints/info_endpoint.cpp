@@ -26,7 +26,8 @@ json timing(station::Station& station) {
             {"kdt_ascii_ms", m.kdt_ascii_ms},
             {"scan_wait", m.scan_wait},
             {"waiting", scan ? scan->waiting() : 0},
-            {"scans", scan ? scan->scans() : 0}};
+            {"scans", scan ? scan->scans() : 0},
+            {"wakeups", scan ? scan->wakeups() : 0}};
 }
 
 Reply info(Api& api) {

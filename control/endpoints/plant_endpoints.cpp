@@ -10,6 +10,7 @@
 #include "config/shard.hpp"
 #include "config/station_pattern.hpp"
 #include "control/endpoints/station_side.hpp"
+#include "station/scan_loop.hpp"
 
 namespace slmp::control {
 
@@ -21,6 +22,7 @@ namespace {
 json summary(StationSide& side) {
     const auto& profile = side.station.cpu().profile();
     auto totals = side.metrics.totals();
+    auto* scan = side.station.scan_loop();
     return {{"name", side.name},
             {"profile", profile.name},
             {"type_name", profile.type_name},
@@ -32,7 +34,9 @@ json summary(StationSide& side) {
             {"udp", side.api.ports.udp},
             {"connections", side.station.activity().connections().size()},
             {"requests", totals.requests},
-            {"errors", totals.errors}};
+            {"errors", totals.errors},
+            {"scans", scan ? scan->scans() : 0},
+            {"wakeups", scan ? scan->wakeups() : 0}};
 }
 
 // ?offset=N, ?limit=N, ?shard=N: a whole number, else 400 naming it.
@@ -138,7 +142,9 @@ void add_plant_endpoints(Router& router, Plant& plant) {
             auto started = json::array();
             for (auto* side : chosen) {
                 auto reply = co_await on_station(*side, [side, &scenario] {
-                    return side->router.route(Verb::post, "/api/scenarios", scenario);
+                    auto reply = side->router.route(Verb::post, "/api/scenarios", scenario);
+                    side->station.touched();   // a scenario runs every scan
+                    return reply;
                 });
                 if (reply.status == Status::created) {
                     started.push_back(side->name);
@@ -148,7 +154,9 @@ void add_plant_endpoints(Router& router, Plant& plant) {
                     for (auto* undo : chosen)
                         if (undo->name == done)
                             co_await on_station(*undo, [undo, &name] {
-                                return undo->router.route(Verb::delete_, "/api/scenarios/" + name, "");
+                                auto reply = undo->router.route(Verb::delete_, "/api/scenarios/" + name, "");
+                                undo->station.touched();
+                                return reply;
                             });
                 auto error = json::parse(reply.body, nullptr, false);
                 auto message = error.is_object() ? error.value("error", reply.body) : reply.body;
@@ -164,7 +172,9 @@ void add_plant_endpoints(Router& router, Plant& plant) {
             auto stopped = json::array();
             for (auto& side : plant.stations) {
                 auto reply = co_await on_station(*side, [&side, &name] {
-                    return side->router.route(Verb::delete_, "/api/scenarios/" + name, "");
+                    auto reply = side->router.route(Verb::delete_, "/api/scenarios/" + name, "");
+                    side->station.touched();
+                    return reply;
                 });
                 if (reply.status == Status::ok) stopped.push_back(side->name);
             }

@@ -48,10 +48,15 @@ struct StationSide {
     Router router;   // every station endpoint, as "/api/devices/{address}", ...
 };
 
-// Runs fn() on the station's strand and resumes the caller with the result.
+// Runs fn() on the station's strand, after the scans due by now
+// (Station::catch_up), and resumes the caller with the result. A fn that
+// changes the station calls Station::touched() itself.
 template <class F>
 boost::asio::awaitable<std::invoke_result_t<F>> on_station(StationSide& side, F fn) {
-    return station::on_home(side.home, std::move(fn));
+    return station::on_home(side.home, [station = &side.station, fn = std::move(fn)]() mutable {
+        station->catch_up();
+        return fn();
+    });
 }
 
 // Runs fn(side) on the strand of every station at once and resumes the caller

@@ -103,10 +103,22 @@ namespace {
 // or the event stream that then owns the connection (event_types stays set).
 asio::awaitable<Reply> station_request(StationSide& side, bhttp::verb method, std::string target, std::string body,
                                        tcp::socket& socket) {
+    // A sleeping station first runs the scans due by now; whatever is not a
+    // read may change it (a timer coil, the clock, a scenario), and a device
+    // watcher (event stream, wait) needs every scan, so its scan loop looks
+    // again after (docs/timing.md, "What wakes a station").
+    side.station.catch_up();
+    const bool changes = method != bhttp::verb::get && method != bhttp::verb::head;
+    auto look_again = [&side, changes] {
+        if (changes || side.station.cpu().memory().observed()) side.station.touched();
+    };
     auto reply = side.router.route(method, target, std::move(body));
+    look_again();
     if (reply.deferred) {
         auto later = std::move(reply.deferred);
         reply = co_await later();
+        side.station.catch_up();
+        look_again();
     }
     if (reply.event_types != 0) co_await stream_events(socket, side.events, reply.event_types);
     co_return reply;
