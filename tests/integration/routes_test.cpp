@@ -75,7 +75,7 @@ Bytes route_bytes(const Route& r, Codec codec) {
     w.u8(r.station);
     w.u16(r.module_io);
     w.u8(r.multidrop);
-    return w.take();
+    return w.bytes();
 }
 std::size_t route_offset(FrameKind kind, Codec codec) {
     const std::size_t subheader = kind == FrameKind::E4 ? 6 : 2;
