@@ -100,6 +100,15 @@ bool DeviceMemory::operator==(const DeviceMemory& other) const {
 }
 
 std::vector<DeviceRange> DeviceMemory::possibly_nonzero(const DeviceSpec& spec) const {
+    return nonzero_in_pages(spec, nullptr);
+}
+
+std::vector<DeviceRange> DeviceMemory::possibly_nonzero(const DeviceSpec& spec, const std::vector<ByteRange>& touched_pages) const {
+    return nonzero_in_pages(spec, &touched_pages);
+}
+
+// touched_pages: the arena's, or nullptr to ask the arena for the part's pages only.
+std::vector<DeviceRange> DeviceMemory::nonzero_in_pages(const DeviceSpec& spec, const std::vector<ByteRange>* touched_pages) const {
     const auto& s = store(spec.area);
     const auto* base = arena_.data();
     auto devices = [&](const auto& plane) {
@@ -107,12 +116,23 @@ std::vector<DeviceRange> DeviceMemory::possibly_nonzero(const DeviceSpec& spec) 
         if (plane.empty()) return out;
         using T = typename std::remove_reference_t<decltype(plane)>::value_type;
         const auto begin = static_cast<std::size_t>(reinterpret_cast<const std::byte*>(plane.data()) - base);
-        for (const auto& r : arena_.touched(begin, begin + plane.size_bytes())) {
+        const auto end = begin + plane.size_bytes();
+        auto add = [&](ByteRange r) {
+            r.begin = std::max(r.begin, begin);
+            r.end = std::min(r.end, end);
+            if (r.begin >= r.end) return;
             const auto first = static_cast<std::uint32_t>((r.begin - begin) / sizeof(T));
-            const auto end = static_cast<std::uint32_t>((r.end - begin + sizeof(T) - 1) / sizeof(T));
-            if (!out.empty() && out.back().end >= first) out.back().end = std::max(out.back().end, end);
-            else out.push_back({first, end});
+            const auto last = static_cast<std::uint32_t>((r.end - begin + sizeof(T) - 1) / sizeof(T));
+            if (!out.empty() && out.back().end >= first) out.back().end = std::max(out.back().end, last);
+            else out.push_back({first, last});
+        };
+        if (!touched_pages) {
+            for (const auto& r : arena_.touched(begin, end)) add(r);
+            return out;
         }
+        const auto& pages = *touched_pages;
+        auto it = std::lower_bound(pages.begin(), pages.end(), begin, [](const ByteRange& r, std::size_t at) { return r.end <= at; });
+        for (; it != pages.end() && it->begin < end; ++it) add(*it);
         return out;
     };
     if (spec.unit == Unit::Bit) return devices(spec.part == Part::Coil ? s.coils : s.bits);

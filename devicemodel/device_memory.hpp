@@ -82,6 +82,10 @@ public:
     // CPU neither read nor dirty its memory. Covers the whole store (for ZR
     // the slack behind it too).
     std::vector<DeviceRange> possibly_nonzero(const DeviceSpec& spec) const;
+    // The same from touched_pages(), read once for many parts: a snapshot asks
+    // for every part, and one question per part was most of a plant's start.
+    std::vector<DeviceRange> possibly_nonzero(const DeviceSpec& spec, const std::vector<ByteRange>& touched_pages) const;
+    std::vector<ByteRange> touched_pages() const { return arena_.touched(); }
 
     // Whether devices [start, start + count) exist (count in devices, not words).
     bool contains(Area area, std::uint64_t start, std::uint64_t count) const;
@@ -122,6 +126,7 @@ public:
     bool operator==(const DeviceMemory& other) const;
 
 private:
+    std::vector<DeviceRange> nonzero_in_pages(const DeviceSpec& spec, const std::vector<ByteRange>* touched_pages) const;
     // Device memory only costs RAM where it is used (docs/plants.md, "Memory"):
     // every store is a slice of one ZeroPageArena, whose pages stay the
     // kernel's zero page until written, whatever the heap's state.

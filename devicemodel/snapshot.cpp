@@ -95,11 +95,12 @@ private:
 // One part of the memory, devices [0, size): only the devices that may be
 // non-zero are read, in pieces of a thread's reused buffer (a buffer of the
 // whole part would cost its pages again for every station of a plant).
-void encode_part(ByteWriter& w, const DeviceMemory& memory, const DeviceSpec& part, std::uint32_t size) {
+void encode_part(ByteWriter& w, const DeviceMemory& memory, const DeviceSpec& part, std::uint32_t size,
+                 const std::vector<ByteRange>& touched_pages) {
     thread_local std::vector<std::uint32_t> buffer(4096);
     RunEncoder runs(w);
     std::uint32_t at = 0;
-    for (const auto& r : memory.possibly_nonzero(part)) {
+    for (const auto& r : memory.possibly_nonzero(part, touched_pages)) {
         const auto end = std::min(r.end, size);
         if (r.first >= end) continue;
         runs.zeros(r.first - at);
@@ -202,6 +203,7 @@ std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::strin
     for (std::size_t i = 0; i < static_cast<std::size_t>(Area::Count); ++i)
         if (saved(static_cast<Area>(i), contents)) areas.push_back(static_cast<Area>(i));
     const bool labels = memory.label_area_words() > 0;
+    const auto touched_pages = memory.touched_pages();
     w.u32(static_cast<std::uint32_t>(areas.size() + (labels ? 1 : 0)));
     for (auto area : areas) {
         auto size = area == Area::ZR ? std::max(memory.size(Area::ZR), memory.size(Area::R)) : memory.size(area);
@@ -211,7 +213,7 @@ std::vector<std::uint8_t> encode_snapshot(const DeviceMemory& memory, std::strin
         w.u8(static_cast<std::uint8_t>(parts.size()));
         for (const auto* part : parts) {
             w.u8(static_cast<std::uint8_t>(part->part));
-            encode_part(w, memory, *part, size);
+            encode_part(w, memory, *part, size, touched_pages);
         }
     }
     if (labels) {

@@ -51,8 +51,9 @@ std::size_t count_param(const ApiRequest& request, const std::string& name, std:
 }
 
 bool contains_any_case(std::string_view name, std::string_view text) {
-    auto lower = [](unsigned char ch) { return std::tolower(ch); };
-    return std::ranges::search(name, text, {}, lower, lower).begin() != name.end() || text.empty();
+    // std::search, not std::ranges::search: clang 14 (the sanitizer build) cannot compile libstdc++ 12's ranges.
+    auto same = [](unsigned char a, unsigned char b) { return std::tolower(a) == std::tolower(b); };
+    return std::search(name.begin(), name.end(), text.begin(), text.end(), same) != name.end() || text.empty();
 }
 
 // One station of the plant file: its shard and where a client reaches it.
@@ -142,7 +143,7 @@ void add_plant_endpoints(Router& router, Plant& plant) {
             auto started = json::array();
             for (auto* side : chosen) {
                 auto reply = co_await on_station(*side, [side, &scenario] {
-                    auto reply = side->router.route(Verb::post, "/api/scenarios", scenario);
+                    auto reply = side->router().route(Verb::post, "/api/scenarios", scenario);
                     side->station.touched();   // a scenario runs every scan
                     return reply;
                 });
@@ -154,7 +155,7 @@ void add_plant_endpoints(Router& router, Plant& plant) {
                     for (auto* undo : chosen)
                         if (undo->name == done)
                             co_await on_station(*undo, [undo, &name] {
-                                auto reply = undo->router.route(Verb::delete_, "/api/scenarios/" + name, "");
+                                auto reply = undo->router().route(Verb::delete_, "/api/scenarios/" + name, "");
                                 undo->station.touched();
                                 return reply;
                             });
@@ -172,7 +173,7 @@ void add_plant_endpoints(Router& router, Plant& plant) {
             auto stopped = json::array();
             for (auto& side : plant.stations) {
                 auto reply = co_await on_station(*side, [&side, &name] {
-                    auto reply = side->router.route(Verb::delete_, "/api/scenarios/" + name, "");
+                    auto reply = side->router().route(Verb::delete_, "/api/scenarios/" + name, "");
                     side->station.touched();
                     return reply;
                 });

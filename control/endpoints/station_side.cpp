@@ -11,6 +11,12 @@ StationSide::StationSide(const ServedStation& served, std::uint16_t http_port)
       waits(served.home, events),
       api{served.station, events, metrics, waits, served.ports, std::chrono::system_clock::now()} {
     api.ports.http = http_port;
+}
+
+Router& StationSide::router() {
+    if (router_) return *router_;
+    router_ = std::make_unique<Router>();
+    auto& router = *router_;
     add_device_endpoints(router, api);
     add_wait_endpoints(router, api);
     add_snapshot_endpoints(router, api);
@@ -28,6 +34,7 @@ StationSide::StationSide(const ServedStation& served, std::uint16_t http_port)
     add_program_endpoints(router, api);
     add_event_endpoint(router, api);
     add_metrics_endpoint(router, api);
+    return router;
 }
 
 }  // namespace slmp::control

@@ -112,7 +112,7 @@ asio::awaitable<Reply> station_request(StationSide& side, bhttp::verb method, st
     auto look_again = [&side, changes] {
         if (changes || side.station.cpu().memory().observed()) side.station.touched();
     };
-    auto reply = side.router.route(method, target, std::move(body));
+    auto reply = side.router().route(method, target, std::move(body));
     look_again();
     if (reply.deferred) {
         auto later = std::move(reply.deferred);

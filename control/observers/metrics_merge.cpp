@@ -99,8 +99,8 @@ std::string number_text(double value) {
 
 std::string merge_metrics(const std::vector<std::pair<std::string, std::string>>& texts) {
     Families families;
-    for (const auto& [station, text] : texts)
-        families.read(text, [&](const std::string& family, const std::string& line) {
+    for (const auto& [station_name, text] : texts)
+        families.read(text, [&, &station = station_name](const std::string& family, const std::string& line) {
             families[family].samples.push_back(labelled(line, "station", station));
         });
     return families.text();
@@ -112,8 +112,9 @@ std::string sum_metrics(const std::vector<std::pair<std::string, std::string>>& 
     Families families;
     std::map<std::string, double> sums;   // "name{profile=...,...}" (a family's sample line so far) -> the group's sum
     std::map<std::pair<std::string, std::string>, unsigned> states;   // (profile, state) -> stations
-    for (const auto& [group, text] : texts)
-        families.read(text, [&](const std::string& family, const std::string& line) {
+    // (Bindings captured by name: clang 14, the sanitizer build, cannot capture them implicitly.)
+    for (const auto& [group_name, text] : texts)
+        families.read(text, [&, &group = group_name](const std::string& family, const std::string& line) {
             auto space = line.rfind(' ');
             if (space == std::string::npos) return;
             double value = std::strtod(line.c_str() + space + 1, nullptr);

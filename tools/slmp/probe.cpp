@@ -414,8 +414,9 @@ void Prober::sizes() {
         if (!spec || size.get<std::uint32_t>() == 0) continue;
         const bool bits = spec->unit == devicemodel::Unit::Bit;
         const auto form = spec->q_code >= 0 ? DeviceForm::Q : DeviceForm::IQR;
+        const auto last = size.get<std::uint32_t>() - 1;
         auto o = ask_in(codec_, FrameKind::E3, 0x0401, sub(form, bits), [&](FieldWriter& w) {
-            w.device(form, {spec, size.get<std::uint32_t>() - 1});
+            w.device(form, {spec, last});
             w.u16(static_cast<std::uint16_t>(2 * (bits ? 1 : devicemodel::words_per_device(*spec))));
         });
         if (served(o)) start_only.push_back(name);
