@@ -228,3 +228,29 @@ TEST_CASE("proxy: a plant station with \"upstream\"", "[proxy][plant]") {
     CHECK(checked.exit_code == 2);
     CHECK(checked.err.find("'plc-without-port' is not HOST:PORT") != std::string::npos);
 }
+
+TEST_CASE("proxy: in each timing mode B holds a request as its clock says, then it goes on; frames of one write in order", "[proxy][timing]") {
+    SimProcess plc(with_args({"--profile", kPlc, "--no-http"}));
+    auto direct = TcpClient::open(plc.tcp_port());
+    for (const char* mode : {"instant", "end_of_scan", "model"}) {
+        INFO(mode);
+        auto proxy = proxy_to(upstream_of(plc), {"--timing", mode});
+        auto via = TcpClient::open(proxy.tcp_port());
+        UdpClient via_udp;
+        for (const auto& w : kWires) {
+            INFO(w.name());
+            const auto request = client::read_type_name(w.options());
+            const auto from_plc = ask(direct, request);
+            CHECK(show(ask(via, request)) == show(from_plc));
+            CHECK(show(ask(via_udp, proxy.udp_port(), request)) == show(from_plc));
+        }
+        // Two frames in one write: both go on, in order.
+        const Wire w = kWires[0];
+        REQUIRE(via.send(concat({client::read_words(w.options(), addr("D0"), 1), client::read_type_name(w.options())})));
+        Bytes first, second;
+        REQUIRE(via.response(&first));
+        REQUIRE(via.response(&second));
+        CHECK(show(first) == show(expected_response(w, word_data(w, {0}))));
+        CHECK(names(second, "Q06UDVCPU"));
+    }
+}
