@@ -218,9 +218,24 @@ struct ServerConfig {
     LabelsConfig labels;                   // "labels", "structures", --labels files
     std::vector<DriveConfig> drives;       // "drives", --drive: file drives of CPU No.1 (docs/files.md)
     TimingConfig timing;                   // "timing", --timing: when answers leave (docs/timing.md)
+    // Proxy mode (docs/twin.md, "Proxy"): every SLMP request goes on to this
+    // "HOST:PORT" over TCP and its answer comes back; empty: served here.
+    std::string upstream;
+    unsigned upstream_timeout_ms = 3000;   // the upstream's answer must come within this (else CF71)
 };
 inline constexpr double kMinClockSpeed = 0.01, kMaxClockSpeed = 1000;
 inline constexpr const char* kClockSpeedFix = "use a factor from 0.01 to 1000 (default 1: real time)";
+
+// "HOST:PORT" of "upstream" / --upstream, split; throws ConfigError naming
+// `where` and the form when the text is not one ("[::1]:5000" for IPv6).
+struct UpstreamAddress {
+    std::string host;
+    std::uint16_t port = 0;
+    std::string text() const;   // "HOST:PORT" again, for logs
+};
+std::optional<UpstreamAddress> split_upstream(std::string_view text);
+UpstreamAddress parse_upstream(std::string_view text, std::string_view where);
+inline constexpr const char* kUpstreamFix = "give the upstream PLC's address and SLMP TCP port as HOST:PORT, e.g. 192.168.3.39:5000";
 
 // Reads a configuration file; keys left out keep the defaults above.
 ServerConfig load_server_config(const std::filesystem::path& file);

@@ -162,6 +162,12 @@ ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path
             c.ports.push_back({Transport::Udp, static_cast<std::uint16_t>(whole_setting(root, Section::Station, "udp_port"))});
     }
     if (root.has("max_request_bytes")) c.max_request_bytes = whole_setting(root, Section::Station, "max_request_bytes");
+    if (root.has("upstream")) {
+        c.upstream = root["upstream"].string();
+        if (!split_upstream(c.upstream)) root["upstream"].fail("'" + c.upstream + "' is not HOST:PORT", kUpstreamFix);
+    }
+    if (root.has("upstream_timeout_ms"))
+        c.upstream_timeout_ms = static_cast<unsigned>(whole_setting(root, Section::Station, "upstream_timeout_ms"));
     if (root.has("device_sizes")) c.device_sizes = parse_device_sizes(root["device_sizes"]);
     if (root.has("devices")) c.devices = parse_initial_values(root["devices"]);
     if (root.has("log_level")) {
@@ -186,6 +192,35 @@ ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path
         if (!file->empty() && std::filesystem::path(*file).is_relative()) *file = (directory / *file).string();
     parse_labels(root, directory, c.labels);
     return c;
+}
+
+std::optional<UpstreamAddress> split_upstream(std::string_view text) {
+    const auto colon = text.rfind(':');
+    UpstreamAddress address;
+    if (colon != std::string_view::npos) {
+        address.host = std::string(text.substr(0, colon));
+        if (address.host.size() > 2 && address.host.front() == '[' && address.host.back() == ']')
+            address.host = address.host.substr(1, address.host.size() - 2);
+        const auto digits = text.substr(colon + 1);
+        unsigned long port = 0;
+        const bool numeric = !digits.empty() && digits.size() <= 5 && digits.find_first_not_of("0123456789") == std::string_view::npos;
+        if (numeric) port = std::stoul(std::string(digits));
+        // No scheme ("udp://"): the upstream is reached over TCP only (docs/twin.md).
+        if (numeric && port >= 1 && port <= 65535 && !address.host.empty() && address.host.find('/') == std::string::npos) {
+            address.port = static_cast<std::uint16_t>(port);
+            return address;
+        }
+    }
+    return std::nullopt;
+}
+
+UpstreamAddress parse_upstream(std::string_view text, std::string_view where) {
+    if (auto address = split_upstream(text)) return *address;
+    throw ConfigError(std::string(where) + " " + std::string(text) + ": not HOST:PORT; " + kUpstreamFix);
+}
+
+std::string UpstreamAddress::text() const {
+    return (host.find(':') != std::string::npos ? "[" + host + "]" : host) + ":" + std::to_string(port);
 }
 
 ServerConfig parse_server_config(const std::string& json_text, const std::string& source) {

@@ -97,6 +97,19 @@ constexpr Setting kSettings[] = {
      .flag_arg = F::Size, .min = 64, .max = 1 << 20, .default_text = "8192",
      .help = "largest request frame accepted (default 8192)", .fix = "use 64 to 1048576 (default 8192)",
      .doc = "largest request frame; a larger length field closes a TCP connection / drops a datagram"},
+    {.section = S::Station, .key = "upstream", .flag = "upstream", .type = T::String, .flag_arg = F::Text,
+     .default_text = "none",
+     .help = "proxy mode: forward every SLMP request to the PLC or SLMP server at HOST:PORT (TCP) and return its answer "
+             "(docs/twin.md)",
+     .doc = "proxy mode: every SLMP request goes on to the PLC or SLMP server at `HOST:PORT` over one TCP connection and "
+            "its answer comes back; faults, limits and recording still apply here ([twin.md](twin.md#proxy))"},
+    {.section = S::Station, .key = "upstream_timeout_ms", .flag = "upstream-timeout", .type = T::Integer,
+     .flag_arg = F::Real, .min = 1, .max = 600000, .default_text = "3000",
+     .help = "proxy mode: seconds the upstream has to answer a request before the client gets CF71 (default 3)",
+     .fix = "use 1 to 600000 ms (default 3000)",
+     .doc = "proxy mode: how long the upstream has to connect and answer; then the client gets CF71 and the "
+            "connection is opened afresh for the next request",
+     .flag_scale = 1000, .flag_fix = "use 0.001 to 600 seconds (default 3)"},
     {.section = S::Station, .key = "device_sizes", .flag = "", .type = T::Object, .default_text = "the profile's",
      .help = "points per device area, overriding the profile (`X`, `Y`, `M`, `L`, `F`, `V`, `B`, `SB`, `S`, `SM`, "
              "`D`, `W`, `SW`, `SD`, `R`, `ZR`, `RD`, `Z`, `LZ`, `T`, `ST`, `C`, `LT`, `LST`, `LC`, and the CPU "

@@ -120,6 +120,11 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
                                                        "--network-no/--station-no");
         for (auto& p : c.ports) p.numbers = numbers;
     }
+    if (vm.count("upstream")) {
+        c.upstream = vm["upstream"].as<std::string>();
+        config::parse_upstream(c.upstream, "--upstream");
+    }
+    if (vm.count("upstream-timeout")) c.upstream_timeout_ms = static_cast<unsigned>(vm["upstream-timeout"].as<double>() * 1000);
     if (vm.count("max-request-bytes")) c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();
     if (vm.count("log-level")) {
         c.log_level = vm["log-level"].as<std::string>();

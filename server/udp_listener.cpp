@@ -62,9 +62,9 @@ station::StrandTask<> UdpListener::serve() {
         if (at_once) {
             const auto peer = peer_of(sender);
             auto handled = station_.handle(input, policy_, session_, peer);
-            if (handled.relay) {   // the port receives on while another station serves it
+            if (handled.relay || handled.forward) {   // the port receives on while another station or the upstream serves it
                 asio::co_spawn(socket_.get_executor(),
-                               relay_later(std::move(*handled.relay), std::vector<std::uint8_t>(input.begin(), input.end()), sender),
+                               relay_later(std::move(handled), std::vector<std::uint8_t>(input.begin(), input.end()), sender),
                                station::log_exception("UDP port " + std::to_string(port_) + ": a routed datagram failed"));
                 continue;
             }
@@ -81,16 +81,16 @@ station::StrandTask<> UdpListener::serve_later(station::HeldDatagram datagram, u
     if (!co_await datagram.wait() || !socket_.is_open()) co_return;
     const auto peer = peer_of(sender);
     auto handled = datagram.serve(session_, peer);
-    if (handled.relay) {
-        co_await relay_later(std::move(*handled.relay), std::vector<std::uint8_t>(datagram.bytes().begin(), datagram.bytes().end()), sender);
+    if (handled.relay || handled.forward) {
+        co_await relay_later(std::move(handled), std::vector<std::uint8_t>(datagram.bytes().begin(), datagram.bytes().end()), sender);
         co_return;
     }
     if (auto later = answer_now(datagram.bytes(), sender, peer, std::move(handled))) co_await send_later(sender, std::move(*later));
 }
 
-station::StrandTask<> UdpListener::relay_later(station::Relay relay, std::vector<std::uint8_t> datagram, udp::endpoint sender) {
+station::StrandTask<> UdpListener::relay_later(station::Handled pending, std::vector<std::uint8_t> datagram, udp::endpoint sender) {
     const auto peer = peer_of(sender);
-    auto handled = co_await relays_.pass_on(std::move(relay), datagram, policy_, peer);
+    auto handled = co_await station_.pass_on(std::move(pending), datagram, policy_, relays_, session_, peer);
     if (!socket_.is_open()) co_return;
     if (auto later = answer_now(datagram, sender, peer, std::move(handled))) co_await send_later(sender, std::move(*later));
 }

@@ -35,8 +35,9 @@ private:
     // end_of_scan and model (docs/timing.md): one datagram, held on the
     // virtual clock until it is served, while the port receives the next.
     station::StrandTask<> serve_later(station::HeldDatagram datagram, boost::asio::ip::udp::endpoint sender);
-    // A datagram for another station (Handled::relay): its trip, then its answer.
-    station::StrandTask<> relay_later(station::Relay relay, std::vector<std::uint8_t> datagram,
+    // A datagram for another station or the upstream (Handled::relay,
+    // Handled::forward): its trip, then its answer.
+    station::StrandTask<> relay_later(station::Handled pending, std::vector<std::uint8_t> datagram,
                                       boost::asio::ip::udp::endpoint sender);
     // The station's answer to one datagram, sent at once when it can be (no
     // scenario delay or split, room in the send buffer); else returned.

@@ -49,7 +49,7 @@ StrandTask<> Inbox::serve() {
 StrandTask<> Inbox::serve_relayed() {
     auto pending = std::move(*relay_);
     relay_.reset();
-    auto handled = co_await relays_.pass_on(std::move(pending.relay), pending.frame, policy_, peer_);
+    auto handled = co_await station_.pass_on(std::move(pending.handled), pending.frame, policy_, relays_, session_, peer_);
     handled.outcome.consumed = pending.frame.size();
     const bool go_on = take(std::move(handled), pending.frame, true);
     if (go_on && !bytes_.empty()) {   // the frames behind it
@@ -79,9 +79,10 @@ void Inbox::begin_frames() {
 
 bool Inbox::take(Handled handled, std::span<const std::uint8_t> frame, bool owned) {
     auto& outcome = handled.outcome;
-    if (handled.relay) {   // another station serves it: serve() carries it there next (serve_relayed)
-        relay_ = PendingRelay{std::move(*handled.relay), std::vector<std::uint8_t>(frame.begin(), frame.begin() + static_cast<std::ptrdiff_t>(outcome.consumed))};
-        if (!owned) consumed_ += outcome.consumed;
+    if (handled.relay || handled.forward) {   // another station or the upstream serves it: serve() carries it there next (serve_relayed)
+        const auto size = outcome.consumed;
+        relay_ = PendingRelay{std::move(handled), std::vector<std::uint8_t>(frame.begin(), frame.begin() + static_cast<std::ptrdiff_t>(size))};
+        if (!owned) consumed_ += size;
         waiting_ = true;
         return false;
     }

@@ -116,8 +116,8 @@ private:
     bool take(Handled handled, std::span<const std::uint8_t> frame, bool owned);
     void serve_at_once();
     StrandTask<> serve_timed();      // end_of_scan and model: hold_for_clock(), then what it served leaves bytes_
-    // A frame for another station (take() kept it in relay_): its trip and
-    // answer, then the frames after it.
+    // A frame for another station or the upstream (take() kept it in
+    // relay_): its trip and answer, then the frames after it.
     StrandTask<> serve_relayed();
     StrandTask<> hold_for_clock();
     // One wait on the clock (ScanLoop::until_end_or) while the feed is read.
@@ -147,7 +147,7 @@ private:
     bool waiting_ = false;
     std::optional<Ticket> held_;   // model: a request whose time has not come
     struct PendingRelay {
-        Relay relay;
+        Handled handled;   // with its relay, or forward
         std::vector<std::uint8_t> frame;
     };
     std::optional<PendingRelay> relay_;   // a frame that waits for its trip (serve_relayed)

@@ -37,6 +37,9 @@ struct Handled {
     // Not served here: a module's port passes the frame of outcome.consumed
     // bytes on to another station (station/router.hpp; Relays::pass_on).
     std::optional<Relay> relay;
+    // Not served here either: proxy mode sends the frame of outcome.consumed
+    // bytes to the station's upstream (Station::pass_on; docs/twin.md, "Proxy").
+    bool forward = false;
 };
 
 class ScenarioHook : public ActivityObserver {

@@ -24,17 +24,32 @@
 #include "station/scan_loop.hpp"
 #include "station/scenario_station.hpp"
 #include "station/station_snapshot.hpp"
+#include "station/upstream.hpp"
 
 namespace slmp::station {
 
+namespace asio = boost::asio;
 using protocol::Outcome;
 using std::chrono::microseconds;
+
+namespace {
+
+// Proxy mode cuts every frame SLMP has (1E, the station-number-extended
+// frame), whatever its own profile's port takes: the upstream decides.
+config::Profile framing_every_frame(config::Profile profile, const config::ServerConfig& config) {
+    if (config.upstream.empty()) return profile;
+    profile.port.frame_1e = true;
+    profile.port.station_extended_frame = true;
+    return profile;
+}
+
+}  // namespace
 
 Station::Station(config::Profile profile, protocol::EngineOptions options)
     : cpu_(std::move(profile.cpu)), engine_(cpu_, std::move(profile.port), options), timing_model_(profile.timing) {}
 
 Station::Station(const station::Home& home, const config::ServerConfig& config)
-    : Station(config::resolve_profile(config), protocol::EngineOptions{config.max_request_bytes}) {
+    : Station(framing_every_frame(config::resolve_profile(config), config), protocol::EngineOptions{config.max_request_bytes}) {
     home_ = home;
     // The scenario files' addresses follow this CPU (FX5: X/Y in octal).
     devicemodel::NumberingScope numbering(cpu_.profile().numbering);
@@ -57,6 +72,12 @@ Station::Station(const station::Home& home, const config::ServerConfig& config)
     timing_model_ = config_.timing.model.over(timing_model_);
     if (timing_mode_ == config::TimingMode::Model)
         timing_ = std::make_unique<ResponseTiming>(timing_model_, config_.timing.jitter, config_.timing.seed);
+    if (!config_.upstream.empty()) {
+        upstream_ = std::make_unique<Upstream>(home, config::parse_upstream(config_.upstream, "upstream"),
+                                               std::chrono::milliseconds(config_.upstream_timeout_ms), *log_);
+        log_->info("proxy mode: every SLMP request goes to {} (timeout {} ms); the local devices serve none",
+                   upstream_->address().text(), config_.upstream_timeout_ms);
+    }
 }
 
 Station::~Station() = default;
@@ -106,6 +127,7 @@ void Station::start() {
 void Station::stop() {
     catch_up();   // the last snapshot holds what a scan now would show
     if (scan_) scan_->stop();
+    if (upstream_) upstream_->stop();
     scenario_.log_summary();
     if (persistence_) {
         persistence_->stop();
@@ -129,11 +151,13 @@ protocol::Session Station::new_session(const config::PortConfig& port) {
 Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodePolicy policy, protocol::Session& session,
                         const protocol::Peer& peer, const Service* service) {
     auto request = engine_.decode(input, policy, session.own, session.routed);
+    if (auto forwarded = to_upstream(request)) return std::move(*forwarded);
     if (auto relayed = route(request, input, policy)) return std::move(*relayed);
     return serve(std::move(request), input, session, peer, service);
 }
 
 Handled Station::handle(Ticket& ticket, protocol::Session& session, const protocol::Peer& peer) {
+    if (auto forwarded = to_upstream(ticket.request)) return std::move(*forwarded);
     if (auto relayed = route(ticket.request, ticket.bytes, ticket.policy)) return std::move(*relayed);
     return serve(std::move(ticket.request), ticket.bytes, session, peer, ticket.service ? &*ticket.service : nullptr);
 }
@@ -172,6 +196,60 @@ std::optional<Handled> Station::route(protocol::Request& request, std::span<cons
     return relayed;
 }
 
+// Proxy mode (docs/twin.md, "Proxy"): the frame goes on as it came. A frame
+// not yet whole, or bytes that start none, stay the port's own business.
+std::optional<Handled> Station::to_upstream(const protocol::Request& request) const {
+    if (!upstream_ || !request.complete()) return std::nullopt;
+    Handled pending;
+    pending.outcome.consumed = request.size;
+    pending.outcome.command = request.command;
+    pending.outcome.subcommand = request.subcommand;
+    pending.forward = true;
+    return pending;
+}
+
+StrandTask<Handled> Station::pass_on(Handled pending, std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                     Relays& relays, protocol::Session& session, protocol::Peer peer) {
+    if (pending.relay) co_return co_await relays.pass_on(std::move(*pending.relay), std::move(frame), policy, std::move(peer));
+    co_return co_await asio::co_spawn(home(), forward(std::move(frame), policy, session, std::move(peer)), use_strand);
+}
+
+StrandTask<Handled> Station::forward(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy, protocol::Session& session,
+                                     protocol::Peer peer) {
+    catch_up();
+    activity_.request_starting();
+    const auto started = std::chrono::steady_clock::now();
+    // Decoded here only for the scenario faults, the log and the recording: the upstream gets the bytes.
+    scenarios::Incoming incoming{engine_.decode(frame, policy, session.own, session.routed)};
+    const auto& request = incoming.request;
+    auto plan = scenario_.before(incoming, frame, session, peer);
+    Handled handled;
+    auto& o = handled.outcome;
+    if (plan.pass()) {
+        auto answer = co_await upstream_->exchange(frame, request);
+        o.action = Outcome::Action::Respond;
+        o.consumed = request.size;
+        o.command = request.command;
+        o.subcommand = request.subcommand;
+        if (answer.failure.empty()) {
+            o.end_code = answer_end_code(answer.bytes, request);
+            o.response = std::move(answer.bytes);
+        } else {   // what a relay gives when its target does not answer (docs/end-codes.md)
+            o.end_code = protocol::EndCode::RelayTimeout;
+            o.response = protocol::encode_error_response(request.header, request.command, request.subcommand, o.end_code);
+            o.note = "upstream " + upstream_->address().text() + ": " + answer.failure + "; answered CF71";
+        }
+    } else {
+        o = scenario_.answer(plan, request);
+    }
+    scenario_.after(plan, handled, frame, session, peer);
+    log_outcome(*log_, peer, o);
+    activity_.request({session.id, peer, std::span<const std::uint8_t>(frame).first(std::min(o.consumed, frame.size())), request, o,
+                       std::chrono::steady_clock::now() - started, std::nullopt});
+    touched();
+    co_return handled;
+}
+
 StrandTask<Handled> Station::serve_routed(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
                                           std::optional<protocol::Session>& session, protocol::Peer peer) {
     if (!session) {
@@ -188,6 +266,7 @@ StrandTask<Handled> Station::serve_routed(std::vector<std::uint8_t> frame, proto
         if (co_await held.wait()) handled = held.serve(*session, peer);
         else handled.outcome.action = Outcome::Action::Silent;   // the station stopped meanwhile
     }
+    if (handled.forward) handled = co_await forward(std::move(frame), policy, *session, std::move(peer));
     // A Remote RESET through a route restarts this CPU; the route gets no answer.
     if (handled.outcome.action == Outcome::Action::Restart) restart();
     co_return handled;

@@ -37,6 +37,7 @@ class ResponseTiming;
 class ScanLoop;
 class ScenarioStation;
 struct StationSnapshot;
+class Upstream;
 
 // When a request held for the clock (the end_of_scan and model timing
 // modes, docs/timing.md) is served: the station decides (station/inbox.hpp
@@ -136,6 +137,14 @@ public:
     // (nullopt: passed on), a delay holds it.
     StrandTask<std::optional<Handled>> pass_through(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
                                                     protocol::Peer peer, bool receiving);
+    // A request handle() left for elsewhere (Handled::relay: another station
+    // of the plant; Handled::forward: the upstream, in proxy mode), its
+    // `frame`, carried there; its answer. From any strand; `session` is the
+    // connection's, which waits for the answer meanwhile.
+    StrandTask<Handled> pass_on(Handled pending, std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                Relays& relays, protocol::Session& session, protocol::Peer peer);
+    // Proxy mode (docs/twin.md, "Proxy"): null when the station serves from its own memory.
+    Upstream* upstream() { return upstream_.get(); }
     // Waits `timer` on this station's clock (a relay that got no answer).
     StrandTask<> wait_on_clock(std::chrono::milliseconds timer);
     // Whether a request is served as soon as it is whole (instant timing):
@@ -239,6 +248,13 @@ private:
     // with `relay` when another station serves it.
     std::optional<Handled> route(protocol::Request& request, std::span<const std::uint8_t> input,
                                  protocol::DataCodePolicy policy);
+    // Proxy mode: a whole request frame goes to the upstream (a Handled with
+    // `forward`); nullopt: served here (no upstream, or no whole frame).
+    std::optional<Handled> to_upstream(const protocol::Request& request) const;
+    // On this station's strand: the scenario hook around the upstream's
+    // answer instead of the engine, then the log, recording and activity.
+    StrandTask<Handled> forward(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy, protocol::Session& session,
+                                protocol::Peer peer);
     // handle()'s body, for a request decoded from `input` (once).
     Handled serve(protocol::Request request, std::span<const std::uint8_t> input, protocol::Session& session,
                   const protocol::Peer& peer, const Service* service);
@@ -267,6 +283,7 @@ private:
     config::TimingModel timing_model_;                   // the profile's, with the configuration's overrides
     config::TimingMode timing_mode_ = config::TimingMode::Instant;
     std::unique_ptr<ResponseTiming> timing_;             // model mode only
+    std::unique_ptr<Upstream> upstream_;                 // proxy mode only
 };
 
 }  // namespace slmp::station

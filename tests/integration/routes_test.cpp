@@ -9,6 +9,7 @@
 #include <functional>
 #include <thread>
 
+#include "ask.hpp"
 #include "frames.hpp"
 #include "protocol/client.hpp"
 #include "protocol/client_commands.hpp"
@@ -55,18 +56,6 @@ SimOptions plant(const std::string& config) {
 }
 
 
-Bytes ask(TcpClient& c, const Bytes& request) {
-    REQUIRE(c.send(request));
-    Bytes frame;
-    std::string why;
-    if (!c.response(&frame, kReplyTimeout, &why)) return text("<no response: " + why + ">");
-    return frame;
-}
-Bytes ask(UdpClient& c, std::uint16_t port, const Bytes& request) {
-    REQUIRE(c.send_to(port, request));
-    auto answer = c.receive();
-    return answer ? *answer : text("<no response>");
-}
 
 // A route's fields as they travel (§3.1.3-§3.1.5), and where they sit in an answer.
 Bytes route_bytes(const Route& r, Codec codec) {
