@@ -590,7 +590,11 @@ void Prober::commands() {
 }
 
 // Commands per connection: a burst of requests in one send; the port serves
-// 1 + buffer ÷ connections of them (this is the only connection).
+// 1 + buffer ÷ connections of them (this is the only connection). Three
+// bursts, the best one counted: a connection closed just before the first may
+// still be counted by the port when a burst arrives (slmp-sim frees it on the
+// station's turn, which can come after a whole burst); the later bursts go on
+// the same connection when the one before was all answered.
 void Prober::pipeline() {
     progress("commands per connection (a burst of 200)");
     std::vector<Bytes> burst;
@@ -598,10 +602,16 @@ void Prober::pipeline() {
         burst.push_back(protocol::client::read_words(frame(codec_, FrameKind::E3), at("D", 0), 1));
         ++serial_;
     }
-    wire_.close("before the burst");
+    auto served_in = [](const std::vector<Observed>& outcomes) {
+        std::size_t n = 0;
+        while (n < outcomes.size() && served(outcomes[n])) ++n;
+        return n;
+    };
+    wire_.close("before the bursts");
     auto outcomes = wire_.burst(burst);
-    std::size_t served_count = 0;
-    while (served_count < outcomes.size() && served(outcomes[served_count])) ++served_count;
+    for (int more = 0; more < 2; ++more)
+        if (auto again = wire_.burst(burst); served_in(again) > served_in(outcomes)) outcomes = std::move(again);
+    const auto served_count = served_in(outcomes);
     if (served_count == outcomes.size()) {
         profile_["pipeline"] = nullptr;
         fact("pipeline", "no limit up to 200", "a burst of 200 × 0401 in one send, all answered");
@@ -617,9 +627,11 @@ void Prober::pipeline() {
 void Prober::connections() {
     progress("connections (up to " + std::to_string(settings_.max_connections) + ")");
     std::vector<std::unique_ptr<Wire>> open;
-    unsigned count = 0;
+    // The probe's own connection counts when the bursts left it open (it is
+    // not closed just now, so the port cannot still be freeing it).
+    unsigned count = wire_.is_open() ? 1 : 0;
     std::string stop = "none refused";
-    for (unsigned i = 0; i < settings_.max_connections; ++i) {
+    for (unsigned i = count; i < settings_.max_connections; ++i) {
         auto wire = std::make_unique<Wire>(settings_.target, settings_.silence, recorder_);
         auto o = wire->exchange(protocol::client::read_words(frame(codec_, FrameKind::E3), at("D", 0), 1));
         other_wires_sent_ += wire->sent();

@@ -1,5 +1,7 @@
 #include "tools/slmp/wire.hpp"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "devicemodel/hex.hpp"
@@ -143,7 +145,8 @@ std::vector<Observed> Wire::burst(const std::vector<std::vector<std::uint8_t>>& 
         outcomes.resize(requests.size(), {Kind::Close, {}, 0});
     }
     elapsed_ = std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start);
-    close("burst done");
+    if (!std::all_of(outcomes.begin(), outcomes.end(), [](const Observed& o) { return o.kind == Kind::Answer; }))
+        close("burst done");
     return outcomes;
 }
 

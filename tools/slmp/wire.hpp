@@ -46,12 +46,14 @@ public:
     // answer) comes back whole as it arrived, end code 0xFFFF.
     Observed exchange(std::span<const std::uint8_t> request);
     // `requests` written in one send (a pipelined burst); the outcomes in order.
-    // After a silence or a close the rest are marked the same.
+    // After a silence or a close the rest are marked the same, and the
+    // connection is closed; when every request was answered it stays open.
     std::vector<Observed> burst(const std::vector<std::vector<std::uint8_t>>& requests);
     // Opens a connection of its own and keeps it (for counting connections);
     // false when the port refuses or closes it at once.
     bool open();
     void close(const std::string& why);
+    bool is_open() const { return link_ != nullptr; }
     std::chrono::microseconds last_elapsed() const { return elapsed_; }
     // Requests sent (not those a connection that could not be opened never carried).
     std::size_t sent() const { return sent_; }
