@@ -5,11 +5,11 @@
 namespace slmp::server {
 
 Listeners::Listeners(const station::Home& home, station::Station& station, const config::ServerConfig& config,
-                     const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind) {
+                     const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind, bool shared_loop) {
     for (const auto& port : config.ports) {
         try {
             if (port.transport == config::Transport::Tcp)
-                tcp_.push_back(std::make_unique<TcpListener>(home, station, port, bind));
+                tcp_.push_back(std::make_unique<TcpListener>(home, station, port, bind, shared_loop));
             else
                 udp_.push_back(std::make_unique<UdpListener>(home, station, port, bind));
         } catch (const boost::system::system_error& e) {
@@ -47,7 +47,7 @@ void Listeners::listen_face(const station::Home& home, station::Station& station
             return std::make_unique<station::FaceInbox>(station, *unit, peer);
         };
         try {
-            served.tcp = std::make_unique<TcpListener>(home, station, *settings.tcp, bind, std::move(face_inbox),
+            served.tcp = std::make_unique<TcpListener>(home, station, *settings.tcp, bind, false, std::move(face_inbox),
                                                        std::string(face.log_name()));
         } catch (const boost::system::system_error& e) {
             throw fail(config::Transport::Tcp, settings.tcp->port, e);

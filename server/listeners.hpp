@@ -26,9 +26,10 @@ namespace slmp::server {
 class Listeners final : public station::Transports {
 public:
     // Binds every port of `config` on `bind`; throws config::ConfigError naming
-    // the port and the fix when one cannot be had.
+    // the port and the fix when one cannot be had. `shared_loop`: the home's
+    // io_context is run by several threads (server/server.hpp).
     Listeners(const station::Home& home, station::Station& station, const config::ServerConfig& config,
-              const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind);
+              const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind, bool shared_loop = false);
     ~Listeners();
     Listeners(const Listeners&) = delete;
     Listeners& operator=(const Listeners&) = delete;

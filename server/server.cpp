@@ -28,11 +28,24 @@ asio::ip::address bind_address(const std::string& text) {
     return address;
 }
 
-// A thread per core, or --threads. Any thread serves any station's
-// connections; each station's own work stays on its strand.
+// A thread per core, or --threads.
 std::size_t thread_count(const config::PlantConfig& plant) {
     return plant.threads ? plant.threads : std::max(1u, std::thread::hardware_concurrency());
 }
+
+// An event loop per thread while there are at least as many stations as
+// threads: a loop run by one thread serves a request without waking another
+// thread (Asio's shared loop costs two epoll_waits and futex wakes a request,
+// docs/plants.md "Threads"). Fewer stations than threads: as many loops as
+// stations, the threads spread over them, so a lone busy station still has
+// every thread for its connections' reads and writes.
+std::vector<std::size_t> threads_per_loop(std::size_t threads, std::size_t stations) {
+    const auto loops = std::max<std::size_t>(1, std::min(threads, stations));
+    std::vector<std::size_t> per_loop(loops, threads / loops);
+    for (std::size_t k = 0; k < threads % loops; ++k) ++per_loop[k];
+    return per_loop;
+}
+
 
 // A plant holds two sockets a station and more per client; the soft limit
 // (often 1024) would refuse them long before the hard one.
@@ -45,19 +58,28 @@ void raise_open_file_limit() {
 
 }  // namespace
 
-Server::Served::Served(const station::Home& home, const config::StationConfig& station_config)
+std::vector<std::unique_ptr<Server::Loop>> Server::make_loops(std::size_t threads, std::size_t stations) {
+    std::vector<std::unique_ptr<Loop>> loops;
+    for (auto n : threads_per_loop(threads, stations)) loops.push_back(std::make_unique<Loop>(n));
+    return loops;
+}
+
+Server::Loop::Loop(std::size_t threads)
+    : threads(threads), io(static_cast<int>(threads)), keep_running(boost::asio::make_work_guard(io)) {}
+
+Server::Served::Served(const station::Home& home, const config::StationConfig& station_config, bool shared_loop)
     : home(home),
       settings(station_config),
       station(home, settings.server),
-      listeners(home, station, settings.server, settings.frontends, bind_address(settings.server.bind)) {
+      listeners(home, station, settings.server, settings.frontends, bind_address(settings.server.bind), shared_loop) {
     station.connect(listeners);
 }
 
 Server::Server(const config::PlantConfig& plant)
     : plant_(plant),
       threads_(thread_count(plant_)),
-      io_(static_cast<int>(threads_)),
-      main_(asio::make_strand(io_)),
+      loops_(make_loops(threads_, plant_.stations.size())),
+      main_(asio::make_strand(loops_.back()->io)),
       signals_(main_, SIGINT, SIGTERM),
       snapshot_signal_(main_, SIGUSR1) {
     raise_open_file_limit();
@@ -65,7 +87,8 @@ Server::Server(const config::PlantConfig& plant)
     for (std::size_t k = 0; k < plant_.stations.size(); ++k) {
         const auto& station_config = plant_.stations[k];
         try {
-            stations_.push_back(std::make_unique<Served>(asio::make_strand(io_), station_config));
+            auto& loop = loop_of(k);
+            stations_.push_back(std::make_unique<Served>(asio::make_strand(loop.io), station_config, loop.threads > 1));
         } catch (const config::ConfigError& e) {
             if (!plant_.plant) throw;
             throw config::ConfigError("station '" + station_config.server.name + "': " + e.what());
@@ -169,14 +192,16 @@ void Server::run() {
     if (http_) http_->set_ready();
     write_ready_file();
     std::vector<std::thread> workers;
-    for (std::size_t k = 1; k < threads_; ++k) workers.emplace_back([this] { io_.run(); });
-    io_.run();
+    for (auto& loop : loops_)
+        for (std::size_t k = 0; k < loop->threads; ++k)
+            if (loop != loops_.front() || k > 0) workers.emplace_back([&io = loop->io] { io.run(); });
+    loops_.front()->io.run();
     for (auto& worker : workers) worker.join();
     spdlog::info("stopped");
 }
 
 void Server::stop() {
-    // Each station stops on its own strand; the io_context then runs out of work.
+    // Each station stops on its own strand; the loops then run out of work.
     for (auto& s : stations_)
         asio::post(s->home, [served = s.get()] {
             served->station.stop();
@@ -185,6 +210,7 @@ void Server::stop() {
     snapshot_signal_.cancel();
     if (http_) http_->stop();
     signals_.cancel();
+    for (auto& loop : loops_) loop->keep_running.reset();
 }
 
 // Tests and scripts wait for this file instead of sleeping; it is written

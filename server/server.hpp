@@ -1,6 +1,7 @@
 // The running simulator: its stations (one, or a plant of them), each with its
 // listeners on its home strand; the HTTP API; the signals that stop it; the
-// threads that run them all (one io_context shared by --threads threads).
+// threads that run them all (an event loop per thread, or one shared by all
+// threads when there are fewer stations than threads; docs/plants.md, "Threads").
 #pragma once
 
 #include <memory>
@@ -31,9 +32,10 @@ private:
     void join_networks();
     // One station on its home strand: everything it does (its listeners,
     // scan, scenarios, the serving of its requests, the HTTP requests for it)
-    // runs there; its TCP connections read and write on strands of their own.
+    // runs there; on a loop run by several threads its TCP connections read and
+    // write on strands of their own.
     struct Served {
-        Served(const station::Home& home, const config::StationConfig& config);
+        Served(const station::Home& home, const config::StationConfig& config, bool shared_loop);
         station::Home home;
         config::StationConfig settings;   // as read (Listeners keep references into it)
         station::Station station;
@@ -48,10 +50,21 @@ private:
     void wait_for_snapshot_signal();
     const config::ServerConfig& first() const { return plant_.stations.front().server; }   // the process-wide keys
 
+    // An io_context and the threads that run it. Station k lives on loop
+    // k % loops; a loop of one thread hands nothing to another thread.
+    struct Loop {
+        explicit Loop(std::size_t threads);
+        std::size_t threads;
+        boost::asio::io_context io;
+        boost::asio::executor_work_guard<boost::asio::io_context::executor_type> keep_running;   // until stop()
+    };
+    static std::vector<std::unique_ptr<Loop>> make_loops(std::size_t threads, std::size_t stations);
+    Loop& loop_of(std::size_t station) { return *loops_[station % loops_.size()]; }
+
     config::PlantConfig plant_;
-    std::size_t threads_;                 // run io_ (the main thread is one of them)
-    boost::asio::io_context io_;
-    station::Home main_;                  // the HTTP server and the signals
+    std::size_t threads_;                 // run the loops (the main thread is one of them)
+    std::vector<std::unique_ptr<Loop>> loops_;
+    station::Home main_;                  // the HTTP server and the signals, on the last loop
     std::vector<std::unique_ptr<Served>> stations_;
     station::Router router_;   // the plant's networks: read-only once the stations joined it
     std::unique_ptr<control::HttpServer> http_;   // null with --no-http; destroyed before the stations

@@ -10,7 +10,7 @@ namespace asio = boost::asio;
 using asio::ip::tcp;
 
 TcpListener::TcpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
-                         const asio::ip::address& bind, InboxMaker face_inbox, std::string face)
+                         const asio::ip::address& bind, bool shared_loop, InboxMaker face_inbox, std::string face)
     : home_(home),
       station_(station),
       config_(port),
@@ -19,12 +19,14 @@ TcpListener::TcpListener(const station::Home& home, station::Station& station, c
       make_inbox_(std::move(face_inbox)),
       face_(std::move(face)) {
     if (!config_.max_connections) config_.max_connections = station.engine().port().max_connections;
-    // An SLMP connection in the instant timing mode reads, frames and writes on
-    // a strand of its own, so several threads serve one busy station; its
-    // requests are still served one at a time on the station's strand. The
-    // timing modes' waits and another face's inbox touch the station
-    // throughout: those connections stay on the station's strand.
-    own_strands_ = !make_inbox_ && station.timing_mode() == config::TimingMode::Instant;
+    // On a loop that several threads run, an SLMP connection in the instant
+    // timing mode reads, frames and writes on a strand of its own, so the
+    // threads serve one busy station together; its requests are still served
+    // one at a time on the station's strand. On a loop of one thread a strand
+    // of its own would only add a hand-over a request. The timing modes' waits
+    // and another face's inbox touch the station throughout: those connections
+    // stay on the station's strand.
+    own_strands_ = shared_loop && !make_inbox_ && station.timing_mode() == config::TimingMode::Instant;
     if (!make_inbox_) make_inbox_ = slmp_inbox(home_, station_, config_, [this] { return sessions_.size(); });
     listen();   // throws boost::system::system_error when the port cannot be had
     endpoint_ = acceptor_.local_endpoint();

@@ -21,9 +21,11 @@ namespace slmp::server {
 class TcpListener {
 public:
     // Serves SLMP unless `face_inbox` makes another face's inboxes (`face`:
-    // its log name, server/tcp_session.hpp).
+    // its log name, server/tcp_session.hpp). `shared_loop`: several threads
+    // run the home's io_context (server/listeners.hpp).
     TcpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
-                const boost::asio::ip::address& bind, InboxMaker face_inbox = {}, std::string face = {});
+                const boost::asio::ip::address& bind, bool shared_loop = false, InboxMaker face_inbox = {},
+                std::string face = {});
 
     std::uint16_t port() const { return endpoint_.port(); }   // the bound port, also when 0 was asked for
     void stop();
