@@ -21,8 +21,6 @@ using nlohmann::json;
 
 namespace {
 
-[[noreturn]] void bad(const std::string& message) { throw ApiError{Status::bad_request, message}; }
-
 std::string hex(unsigned value) {
     char text[8];
     auto [end, _] = std::to_chars(text, text + sizeof text, value, 16);

@@ -16,8 +16,6 @@ namespace {
 
 constexpr std::uint64_t kMaxStepScans = 1000000;   // one request must not hold the thread for long
 
-[[noreturn]] void fail(Status status, const std::string& message) { throw ApiError{status, message}; }
-
 station::ScanLoop& scan_loop(Api& api) {
     auto* loop = api.station.scan_loop();
     if (!loop) fail(Status::conflict, "this station has no scan cycle, so it has no clock");

@@ -13,8 +13,6 @@ using nlohmann::json;
 
 namespace {
 
-[[noreturn]] void bad(const std::string& message) { throw ApiError{Status::bad_request, message}; }
-
 View view_of(const ApiRequest& request, const NamedDevice& named) {
     const auto* as = request.param("as");
     if (!as) return named.view.value_or(default_view(*named.start.spec));

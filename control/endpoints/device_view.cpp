@@ -11,8 +11,6 @@ using nlohmann::json;
 
 namespace {
 
-[[noreturn]] void bad(const std::string& message) { throw ApiError{Status::bad_request, message}; }
-
 std::string symbol(const DeviceSpec& spec) { return std::string(spec.symbol); }
 
 void check_view(const DeviceSpec& spec, View view) {

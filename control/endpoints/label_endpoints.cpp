@@ -19,8 +19,6 @@ using devicemodel::LabelScalar;
 
 namespace {
 
-[[noreturn]] void bad(const std::string& message) { throw ApiError{Status::bad_request, message}; }
-
 json label_json(const devicemodel::Label& l, devicemodel::Numbering numbering) {
     return {{"name", l.name},
             {"type", devicemodel::format_label_type(l.type, l.dims)},

@@ -13,8 +13,6 @@ using nlohmann::json;
 
 namespace {
 
-[[noreturn]] void fail(Status status, const std::string& message) { throw ApiError{status, message}; }
-
 Reply ondemand(Api& api, const ApiRequest& request) {
     const std::string example = "{\"data\": \"D100-D109\", \"to\": \"all\"}";
     auto body = json::parse(request.body, nullptr, false);

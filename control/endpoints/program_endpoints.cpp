@@ -15,8 +15,6 @@ using nlohmann::json;
 
 namespace {
 
-[[noreturn]] void fail(Status status, const std::string& message) { throw ApiError{status, message}; }
-
 station::CpuProgram& slot(Api& api) {
     auto* program = api.station.program();
     if (!program) fail(Status::conflict, "this station runs no scan cycle, so it runs no program");

@@ -19,8 +19,6 @@ using nlohmann::json;
 
 namespace {
 
-[[noreturn]] void bad(const std::string& message) { throw ApiError{Status::bad_request, message}; }
-
 double ms_since(std::chrono::steady_clock::time_point started) {
     return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - started).count() / 1000.0;
 }

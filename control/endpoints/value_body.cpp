@@ -8,12 +8,6 @@ namespace slmp::control {
 
 using nlohmann::json;
 
-namespace {
-
-[[noreturn]] void bad(const std::string& message) { throw ApiError{Status::bad_request, message}; }
-
-}  // namespace
-
 std::uint64_t count_param(const ApiRequest& request) {
     const auto* text = request.param("count");
     if (!text) return 1;

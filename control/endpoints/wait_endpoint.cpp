@@ -18,8 +18,6 @@ namespace {
 constexpr std::uint64_t kDefaultTimeoutMs = 10000;
 constexpr std::uint64_t kMaxTimeoutMs = 600000;
 
-[[noreturn]] void bad(const std::string& message) { throw ApiError{Status::bad_request, message}; }
-
 struct Condition {
     enum class Kind : std::uint8_t { Equals, NotEquals, Greater, Less, Changes } kind;
     std::uint32_t operand = 0;   // Changes: the value when the wait began

@@ -35,5 +35,7 @@ struct ApiError {
     Status status;
     std::string message;
 };
+[[noreturn]] inline void fail(Status status, const std::string& message) { throw ApiError{status, message}; }
+[[noreturn]] inline void bad(const std::string& message) { fail(Status::bad_request, message); }
 
 }  // namespace slmp::control

@@ -7,8 +7,6 @@ namespace slmp::hostlink {
 
 namespace {
 
-// Data characters a response may carry: 132 bytes less `@00`, command, code, FCS, `*` CR.
-constexpr std::size_t kMaxResponseData = kMaxRecordBytes - 11;
 
 bool fits(std::uint64_t start, std::uint64_t count, std::uint64_t size) { return count > 0 && start + count <= size; }
 

@@ -9,7 +9,6 @@ namespace slmp::hostlink {
 
 namespace {
 
-constexpr std::size_t kMaxResponseData = kMaxRecordBytes - 11;
 constexpr std::size_t kMaxImageWords = 16;   // §6.15/§6.16: at most 16 words per record
 
 }  // namespace

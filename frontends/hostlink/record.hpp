@@ -12,6 +12,8 @@
 namespace slmp::hostlink {
 
 inline constexpr std::size_t kMaxRecordBytes = 132;   // §3.3: "132 bytes per record"
+// Data characters a response may carry: a record less `@00`, command, code, FCS, `*` CR.
+inline constexpr std::size_t kMaxResponseData = kMaxRecordBytes - 11;
 inline constexpr char kStx = 0x02, kEtx = 0x03;
 
 // XOR of every byte of `text`, as two uppercase hex characters (§2.1).
