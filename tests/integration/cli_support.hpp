@@ -35,7 +35,7 @@ namespace slmp::test {
 
 // Runs `slmp args...` to completion (at most 20 s).
 inline RunResult run_cli(const std::vector<std::string>& args) {
-    return run_binary(SLMP_CLI_BINARY, args, std::chrono::seconds(20));
+    return run_binary(under_test(SLMP_CLI_BINARY), args, std::chrono::seconds(20));
 }
 
 // "--host 127.0.0.1 --port N" for a running simulator, plus --udp when asked.

@@ -154,7 +154,7 @@ TEST_CASE("slmp ondemand --wait prints the pushed words", "[ondemand][cli]") {
     REQUIRE(http_put(port, "/api/devices/D100", R"({"values": [4660, 22136]})").status == 200);
     TempDir dir;
     const std::vector<std::string> args = {"--port", std::to_string(sim.tcp_port()), "--timeout", "20s", "--json", "ondemand", "--wait"};
-    const auto pid = detail::spawn(args, dir.path() / "out", dir.path() / "err", SLMP_CLI_BINARY);
+    const auto pid = detail::spawn(args, dir.path() / "out", dir.path() / "err", under_test(SLMP_CLI_BINARY));
     // The CLI is connected once the station lists its connection.
     json list;
     for (int i = 0; i < 2000; ++i) {

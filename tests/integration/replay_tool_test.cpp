@@ -49,7 +49,7 @@ std::string lower_hex(const Bytes& bytes) {
 }
 
 RunResult replay(const std::filesystem::path& recording, const SimProcess& sim) {
-    return run_binary(SLMP_REPLAY_BINARY,
+    return run_binary(under_test(SLMP_REPLAY_BINARY),
                       {recording.string(), "--host", "127.0.0.1", "--port", std::to_string(sim.tcp_port()), "--udp-port",
                        std::to_string(sim.udp_port())},
                       30s);
@@ -95,18 +95,18 @@ TEST_CASE("slmp-replay: no server, a missing recording or a bad option is exit 2
         gone_udp = sim.udp_port();
     }
     // The simulator has exited: its ports are free again (nothing listens there).
-    auto r = run_binary(SLMP_REPLAY_BINARY, {recording.string(), "--port", std::to_string(gone_tcp), "--udp-port",
+    auto r = run_binary(under_test(SLMP_REPLAY_BINARY), {recording.string(), "--port", std::to_string(gone_tcp), "--udp-port",
                                              std::to_string(gone_udp)}, 30s);
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("cannot connect") != std::string::npos);
 
-    r = run_binary(SLMP_REPLAY_BINARY, {(dir.path() / "nope.jsonl").string()});
+    r = run_binary(under_test(SLMP_REPLAY_BINARY), {(dir.path() / "nope.jsonl").string()});
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("nope.jsonl: cannot open the recording") != std::string::npos);
-    CHECK(run_binary(SLMP_REPLAY_BINARY, {recording.string(), "--port", "70000"}).exit_code == 2);
-    CHECK(run_binary(SLMP_REPLAY_BINARY, {}).exit_code == 2);
+    CHECK(run_binary(under_test(SLMP_REPLAY_BINARY), {recording.string(), "--port", "70000"}).exit_code == 2);
+    CHECK(run_binary(under_test(SLMP_REPLAY_BINARY), {}).exit_code == 2);
 
-    auto help = run_binary(SLMP_REPLAY_BINARY, {"--help"});
+    auto help = run_binary(under_test(SLMP_REPLAY_BINARY), {"--help"});
     CHECK(help.exit_code == 0);
     for (const char* option : {"--host", "--port", "--udp-port", "--timeout-ms", "--silence-ms", "--pace", "Exit status"})
         CHECK(help.out.find(option) != std::string::npos);

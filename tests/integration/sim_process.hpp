@@ -83,11 +83,21 @@ private:
     std::filesystem::path path_;
 };
 
-// The slmp-sim under test: this tree's build, or $SLMP_SIM_UNDER_TEST (the
+// A program of this tree's build (`built`, under SLMP_BUILD_DIR), or the same
+// program of the build tree $SLMP_BUILD_UNDER_TEST: scripts/test-sanitizers.sh
+// runs these tests against its ASan + UBSan slmp-sim, slmp and slmp-replay.
+inline std::string under_test(const std::string& built) {
+    const char* other = std::getenv("SLMP_BUILD_UNDER_TEST");
+    const std::string own = SLMP_BUILD_DIR;
+    if (!other || !*other || built.compare(0, own.size(), own) != 0) return built;
+    return other + built.substr(own.size());
+}
+
+// The slmp-sim under test: as under_test() says, or $SLMP_SIM_UNDER_TEST (the
 // ThreadSanitizer build of scripts/test-tsan.sh runs these tests against its own).
 inline std::string sim_binary() {
     const char* other = std::getenv("SLMP_SIM_UNDER_TEST");
-    return other && *other ? other : SLMP_SIM_BINARY;
+    return other && *other ? other : under_test(SLMP_SIM_BINARY);
 }
 
 namespace detail {

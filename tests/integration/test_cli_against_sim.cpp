@@ -219,7 +219,7 @@ TEST_CASE("slmp monitor stops cleanly on Ctrl-C (SIGINT): exit 0", "[cli][monito
     auto out = dir.path() / "out";
     auto err = dir.path() / "err";
     pid_t pid = detail::spawn(target(sim.tcp_port()) + Args{"monitor", "D0", "--interval", "10ms"}, out, err,
-                              SLMP_CLI_BINARY);
+                              under_test(SLMP_CLI_BINARY));
     // Wait (bounded) for the header and the first poll, then interrupt.
     auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (lines_of(read_text(out)).size() < 2 && std::chrono::steady_clock::now() < deadline)

@@ -21,7 +21,7 @@ namespace {
 // loopback a short wait tells it apart. Bounds only, never waits.
 const Args kQuick{"--timeout", "2s", "--silence", "250ms"};
 
-RunResult run_tool(const Args& args) { return run_binary(SLMP_CLI_BINARY, args, scaled_bound(60)); }
+RunResult run_tool(const Args& args) { return run_binary(under_test(SLMP_CLI_BINARY), args, scaled_bound(60)); }
 
 nlohmann::json read_json(const std::filesystem::path& file) {
     std::ifstream in(file);
