@@ -59,6 +59,12 @@ struct Session {
     // are not answered yet, and how many connections the port has open.
     std::size_t queued_ahead = 0;
     std::size_t connections = 1;
+    // Who sent the request being served, set by station::Station before each
+    // request like file_owner: the sender's IPv4 address (0.0.0.0 when not
+    // IPv4) and the simulator's port it reached — what Status Read2 0E53
+    // compares and Communication Setting Get 0E45 reports (docs/nodes.md).
+    std::array<std::uint8_t, 4> peer_ipv4{};
+    std::uint16_t local_port = 0;
 };
 
 // Whether the remote password guards this connection: the CPU has one and the
