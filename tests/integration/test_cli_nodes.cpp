@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli_support.hpp"
+#include "plant_ports.hpp"
 
 using namespace slmp::test;
 using Args = std::vector<std::string>;
@@ -89,4 +90,30 @@ TEST_CASE("slmp nodes and slmp status against an R08CPU: C059, exit 1", "[cli][n
         CHECK(r.err.find("C059") != std::string::npos);
         CHECK(r.err.find("0E") != std::string::npos);
     }
+}
+
+TEST_CASE("a plant: each node station answers node search on its own UDP port; a CPU station refuses", "[cli][node][plant]") {
+    TempDir dir;
+    auto profile = dir.write("node-profile.json", R"({"name": "R08CPU-NODE", "extends": "R08CPU", "node_commands": true, "description": "an SLMP-compatible device"})");
+    SimOptions options;
+    options.plant = true;
+    options.config_json = R"({"bind": "127.0.0.1", "stations": [
+        {"template": {"profile": ")" + profile.string() + R"("}, "count": 3, "name": "cam-{i}", "tcp_port": 0, "udp_port": 0},
+        {"name": "press", "profile": "R08CPU", "tcp_port": 0, "udp_port": 0}]})";
+    SimProcess sim(options);
+    // fnv1a("cam-<i>:0"): each station's first port is configured as 0.
+    const std::vector<std::pair<std::string, std::string>> expected{
+        {"cam-1", "02:00:37:D9:43:8C"}, {"cam-2", "02:00:D8:04:DB:41"}, {"cam-3", "02:00:F1:77:5E:BA"}};
+    for (const auto& [name, mac] : expected) {
+        const auto& station = station_in(sim, name);
+        const auto port = station["udp"][0].get<std::uint16_t>();
+        auto json = json_of(run_cli(target(port, true) + Args{"--json", "nodes"}));
+        CHECK(json["station"] == name);
+        CHECK(json["mac"] == mac);
+        CHECK(json["ip"] == "127.0.0.1");
+        CHECK(json["port"] == port);
+    }
+    auto press = run_cli(target(station_in(sim, "press")["udp"][0].get<std::uint16_t>(), true) + Args{"nodes"});
+    CHECK(press.exit_code == 1);
+    CHECK(press.err.find("C059") != std::string::npos);
 }
