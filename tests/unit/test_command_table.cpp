@@ -103,7 +103,7 @@ TEST_CASE("command table: find_command and find_any_row", "[table]") {
     CHECK(find_command(0x041A, 0x0000)->name == "Array Label Read");
     CHECK_FALSE(find_command(0x041A, 0x0001));   // labels: subcommand 0000 only
     CHECK(find_command(0x141B, 0x0000)->writes());
-    CHECK_FALSE(find_any_row(0x0E30));
+    CHECK_FALSE(find_any_row(0x0E40));   // between the node commands 0E3A and 0E44: none
 }
 
 TEST_CASE("command table: the node commands 0E30-0E53 (JA §3.12-3.14) and the parameter write sequence's rows", "[table][node]") {
