@@ -147,7 +147,7 @@ Outcome Engine::execute(const Request& request, Session& session) {
                                ? "unknown subcommand " + devicemodel::hex4(request.subcommand) + " for command " + devicemodel::hex4(request.command)
                                : "unknown or unimplemented command " + devicemodel::hex4(request.command));
     // JA §4.2.1.8, "other request" while a parameter write runs: CEE0.
-    if (profile.node_commands && !spec->parameter_write() && cpu_.node().busy(cpu_.runtime().now()))
+    if (profile.node_commands && !spec->parameter_write() && cpu_.node().busy(request_time(session, cpu_)))
         return reply.error(EndCode::Busy, std::string(spec->name) +
                                               " refused: a parameter write (Parameter Set Start 0E35) is under way; "
                                               "it ends with 0E36/0E3A or 10 s without Set");

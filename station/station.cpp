@@ -315,6 +315,7 @@ Handled Station::serve(protocol::Request request, std::span<const std::uint8_t> 
     session.file_owner = protocol::lock_owner(peer, session.id);   // UDP: each peer its own (docs/files.md)
     session.peer_ipv4 = protocol::peer_ipv4(peer);                 // the node commands' sender (docs/nodes.md)
     session.local_port = peer.local_port;
+    session.now = scan_ ? scan_->clock().now() : cpu_.runtime().now();   // the node's write timeout (docs/nodes.md)
     auto started = std::chrono::steady_clock::now();
     // Decoded once (handle() or schedule()); the scenario hook sits between decode and execute.
     scenarios::Incoming incoming{std::move(request)};

@@ -53,7 +53,7 @@ constexpr std::size_t kMaxParameterBytes = 512;
 // The node is the station's: CPU No.1, whichever CPU the route selected.
 devicemodel::Cpu& station_cpu(CommandContext& ctx) { return ctx.cpus[0] ? *ctx.cpus[0] : ctx.cpu; }
 Node& node_of(CommandContext& ctx) { return station_cpu(ctx).node(); }
-Node::TimePoint now_of(CommandContext& ctx) { return station_cpu(ctx).runtime().now(); }
+Node::TimePoint now_of(CommandContext& ctx) { return request_time(ctx.session, station_cpu(ctx)); }
 
 // The status code of Status Read/Read2 and node search: 0000 normal, else the
 // CPU's error code (SD0) while one is pending (inferred: "サーバメーカー固有").
