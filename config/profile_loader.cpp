@@ -108,6 +108,7 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
     }
     if (root.has("station_extended_frame")) port.station_extended_frame = root["station_extended_frame"].boolean();
     if (root.has("relays")) port.relays = root["relays"].boolean();
+    if (root.has("node_commands")) port.node_commands = root["node_commands"].boolean();
     if (root.has("timing")) profile.timing = parse_timing_model(root["timing"], profile.timing);
     if (root.has("pipeline")) {   // {"buffer": 32, "over_limit": "CEE0"}: 1 + buffer ÷ connections (SLMP Reference Manual §3.3)
         auto pipeline = root["pipeline"];

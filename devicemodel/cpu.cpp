@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "devicemodel/drives.hpp"
+#include "devicemodel/node.hpp"
 
 namespace slmp::devicemodel {
 
@@ -22,6 +23,7 @@ Cpu::Cpu(CpuProfile profile) : profile_(std::move(profile)), memory_(profile_.si
     publish_device_sizes();
     runtime_.configure({}, memory_);   // powered on with the default parameters
     drives_ = std::make_shared<DriveSet>(profile_.drives);   // in memory until configured
+    node_ = std::make_shared<Node>();
 }
 
 Module* Cpu::module(std::uint16_t io_number) {

@@ -14,6 +14,7 @@
 namespace slmp::devicemodel {
 
 class DriveSet;   // file drives (devicemodel/drives.hpp), kept out of this widely included header
+class Node;       // the SLMP-compatible device's identity and parameters (devicemodel/node.hpp), likewise
 
 // An intelligent function module's buffer memory, reached as U(io)\G(n) by the
 // 008x device commands and as bytes by Extend Unit 0601/1601.
@@ -64,6 +65,11 @@ public:
     const DriveSet& drives() const { return *drives_; }
     void set_drives(std::shared_ptr<DriveSet> drives) { drives_ = std::move(drives); }
 
+    // What the node commands 0E30-0E53 read and change (devicemodel/node.hpp):
+    // CPU No.1's is the station's, on a port whose profile has "node_commands".
+    Node& node() { return *node_; }
+    const Node& node() const { return *node_; }
+
 private:
     void publish_device_sizes();
 
@@ -75,6 +81,7 @@ private:
     LabelTable labels_;
     Runtime runtime_{profile_.family};
     std::shared_ptr<DriveSet> drives_;
+    std::shared_ptr<Node> node_;
 };
 
 }  // namespace slmp::devicemodel

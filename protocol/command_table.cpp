@@ -30,6 +30,10 @@ constexpr std::uint8_t kW = kWrites;
 constexpr std::uint8_t kOp = kOperator;
 // Remote password rows: exempt from the lock they open.
 constexpr std::uint8_t kPw = kPasswordExempt;
+// The node commands (JA §3.12-3.14): on "node_commands" ports only; the
+// parameter write sequence's rows stay served while it runs.
+constexpr std::uint8_t kNd = kNode;
+constexpr std::uint8_t kPwr = kNode | kParameterWrite;
 
 // Sorted by (command, subcommand); checked below. Columns: command, subcommand,
 // name, handler, decoder (device commands), device form, access, flags, families.
@@ -63,6 +67,17 @@ constexpr std::array kCommands = {
     CommandSpec{0x0801, 0x0082, "Entry Monitor Device (iQ-R form, extended)", monitor_register, decode_monitor, IQR,
                 Words, kExt | kCtl, kNotFx5},
     CommandSpec{0x0802, 0x0000, "Execute Monitor", monitor_execute, nullptr, Q, None, kCtl, kNotFx5},
+    CommandSpec{0x0E30, 0x0000, "Node Search", node_search, nullptr, Q, None, kNd},
+    CommandSpec{0x0E31, 0x0000, "IP Address Set", ip_address_set, nullptr, Q, None, kNd},
+    CommandSpec{0x0E32, 0x0000, "Device Info Compare", device_info_compare, nullptr, Q, None, kNd},
+    CommandSpec{0x0E33, 0x0000, "Parameter Get", parameter_get, nullptr, Q, None, kNd},
+    CommandSpec{0x0E34, 0x0000, "Parameter Set", parameter_set, nullptr, Q, None, kPwr},
+    CommandSpec{0x0E35, 0x0000, "Parameter Set Start", parameter_set_start, nullptr, Q, None, kPwr},
+    CommandSpec{0x0E36, 0x0000, "Parameter Set End", parameter_set_end, nullptr, Q, None, kPwr},
+    CommandSpec{0x0E3A, 0x0000, "Parameter Set Cancel", parameter_set_cancel, nullptr, Q, None, kPwr},
+    CommandSpec{0x0E44, 0x0000, "Status Read", status_read, nullptr, Q, None, kNd},
+    CommandSpec{0x0E45, 0x0000, "Communication Setting Get", communication_setting_get, nullptr, Q, None, kNd},
+    CommandSpec{0x0E53, 0x0000, "Status Read2", status_read2, nullptr, Q, None, kNd},
     CommandSpec{0x1001, 0x0000, "Remote RUN", remote_run, nullptr, Q, None, kOp | kW},
     CommandSpec{0x1002, 0x0000, "Remote STOP", remote_stop, nullptr, Q, None, kOp},
     CommandSpec{0x1003, 0x0000, "Remote PAUSE", remote_pause, nullptr, Q, None, kOp},
@@ -147,7 +162,7 @@ static_assert(sorted_and_unique(), "kCommands must be sorted by (command, subcom
 // The per-command facts must agree across a command's rows, since the request
 // path asks them of any row (find_any_row) before the subcommand is known.
 constexpr bool per_command_flags_agree() {
-    constexpr std::uint8_t kPerCommand = kPasswordExempt | kOperator | kWrites;
+    constexpr std::uint8_t kPerCommand = kPasswordExempt | kOperator | kWrites | kNode | kParameterWrite;
     for (std::size_t i = 1; i < kCommands.size(); ++i) {
         const auto& a = kCommands[i - 1];
         const auto& b = kCommands[i];

@@ -39,6 +39,7 @@ struct CommandContext {
     FieldReader& in;               // the request data after the subcommand (rows without a decoder)
     FieldWriter& out;
     bool restarted = false;        // Remote RESET succeeded: no response, every connection closes
+    std::string silent = {};       // non-empty: served, but not answered (why, for the log): a node command meant for another device
     std::string named = {};        // what the request names besides devices ("LabelW, DDD[0]"): Outcome::named
 };
 
@@ -62,6 +63,13 @@ enum Flag : std::uint8_t {
     kPasswordExempt = 1 << 2,  // served on a connection the remote password locks (§6)
     kOperator = 1 << 3,        // changes the CPU's operating state or lock: logged at info
     kWrites = 1 << 4,          // writes device or buffer memory
+    // The node commands 0E30-0E53 (JA §3.12-3.14): served only on a port whose
+    // profile has "node_commands" (an SLMP-compatible device); others answer
+    // their "not supported" code.
+    kNode = 1 << 5,
+    // Parameter Set Start/Set/End/Cancel (JA §4.2.1.8): served while a parameter
+    // write is under way, when every other command answers CEE0.
+    kParameterWrite = 1 << 6,
 };
 
 // The port families that serve a command (a bit per devicemodel::Family).
@@ -84,6 +92,8 @@ struct CommandSpec {
     bool password_exempt() const { return flags & kPasswordExempt; }
     bool operator_command() const { return flags & kOperator; }
     bool writes() const { return flags & kWrites; }
+    bool node_command() const { return flags & kNode; }
+    bool parameter_write() const { return flags & kParameterWrite; }
     bool served_by(devicemodel::Family family) const { return families & family_bit(family); }
     // A device command: it names devices, and its 00□2/00□3 forms are the iQ-R ones.
     bool device_command() const { return decode != nullptr; }

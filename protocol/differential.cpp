@@ -480,7 +480,53 @@ std::optional<Bytes> sample_request(const CommandSpec& row, const FrameOptions& 
             client::FileTarget missing{row.subcommand == 0x40, 4, "PROBE.NOF", "", row.subcommand == 0x0004};
             return row.command == 0x1811 ? client::file_search(frame, missing) : client::file_open(frame, missing, false);
         }
-        default: return std::nullopt;   // remote operations, passwords, file changes, labels written
+        // The node commands (JA §3.12-3.14) in forms that change nothing: IP
+        // Address Set names MAC 00:00:00:00:00:00 (no device's), Parameter
+        // Set/End/Cancel come without a Start (CF31). Parameter Set Start is
+        // left out: it would lock the node against every other request for 10 s.
+        case 0x0E30:
+            return build([](FieldWriter& w) {
+                w.octets(std::vector<std::uint8_t>(6));
+                w.u8(4);
+                w.octets(std::vector<std::uint8_t>(4));
+            });
+        case 0x0E31:
+            return build([](FieldWriter& w) {
+                w.octets(std::vector<std::uint8_t>(6));   // client MAC, IP
+                w.u8(4);
+                w.octets(std::vector<std::uint8_t>(4));
+                w.octets(std::vector<std::uint8_t>(6));   // server MAC
+                w.u8(4);
+                for (int i = 0; i < 3; ++i) w.octets(std::vector<std::uint8_t>(4));   // IP, mask, gateway
+                w.u8(0);                                                              // no host name
+                w.u8(4);
+                w.octets(std::vector<std::uint8_t>(4));   // partner IP, port, protocol
+                w.u16(0);
+                w.u8(0);
+            });
+        case 0x0E32:
+            return build([](FieldWriter& w) {
+                w.u16(0x0001);
+                w.u16(0x0000);
+            });
+        case 0x0E33:
+            return build([](FieldWriter& w) {
+                w.u16(1);
+                w.u16(0x0001);
+            });
+        case 0x0E34:
+            return build([](FieldWriter& w) {
+                w.u16(1);
+                w.u16(0x0001);
+                w.u16(2);
+                w.u16(0);
+            });
+        case 0x0E45: return build([](FieldWriter& w) { w.u16(0x0001); });
+        case 0x0E36:
+        case 0x0E3A:
+        case 0x0E44:
+        case 0x0E53: return build({});
+        default: return std::nullopt;   // remote operations, passwords, file changes, labels written, 0E35
     }
 }
 

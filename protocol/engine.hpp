@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -59,7 +60,22 @@ struct Session {
     // are not answered yet, and how many connections the port has open.
     std::size_t queued_ahead = 0;
     std::size_t connections = 1;
+    // Who sent the request being served, set by station::Station before each
+    // request like file_owner: the sender's IPv4 address (0.0.0.0 when not
+    // IPv4) and the simulator's port it reached — what Status Read2 0E53
+    // compares and Communication Setting Get 0E45 reports (docs/nodes.md).
+    std::array<std::uint8_t, 4> peer_ipv4{};
+    std::uint16_t local_port = 0;
+    // The station's clock when the request is served (set with the above): the
+    // node's 10 s parameter-write timeout runs on it. Unset (a bare engine):
+    // the CPU's last scan stands in (request_time).
+    std::chrono::steady_clock::time_point now{};
 };
+
+// When a request is served, on the station's clock (Session::now), else the CPU's last scan.
+inline std::chrono::steady_clock::time_point request_time(const Session& session, const devicemodel::Cpu& cpu) {
+    return session.now != std::chrono::steady_clock::time_point{} ? session.now : cpu.runtime().now();
+}
 
 // Whether the remote password guards this connection: the CPU has one and the
 // connection's port has it enabled.

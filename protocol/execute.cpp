@@ -7,6 +7,7 @@
 #include <string>
 
 #include "devicemodel/hex.hpp"
+#include "devicemodel/node.hpp"
 #include "protocol/command_table.hpp"
 #include "protocol/engine.hpp"
 #include "protocol/frame_1e.hpp"
@@ -70,7 +71,7 @@ std::optional<Outcome> port_refusal(const devicemodel::CpuProfile& cpu, const Po
                                     const Request& request, Reply& reply) {
     const auto* row = find_any_row(request.command);
     const auto& extra = profile.unsupported_commands;
-    if ((row && !row->served_by(cpu.family)) ||
+    if ((row && !row->served_by(cpu.family)) || (row && row->node_command() && !profile.node_commands) ||
         std::find(extra.begin(), extra.end(), request.command) != extra.end())
         return reply.error(end_code(profile.not_supported_code),
                            "command " + devicemodel::hex4(request.command) + " is not supported by " + cpu.name);
@@ -145,6 +146,11 @@ Outcome Engine::execute(const Request& request, Session& session) {
                            find_any_row(request.command)
                                ? "unknown subcommand " + devicemodel::hex4(request.subcommand) + " for command " + devicemodel::hex4(request.command)
                                : "unknown or unimplemented command " + devicemodel::hex4(request.command));
+    // JA §4.2.1.8, "other request" while a parameter write runs: CEE0.
+    if (profile.node_commands && !spec->parameter_write() && cpu_.node().busy(request_time(session, cpu_)))
+        return reply.error(EndCode::Busy, std::string(spec->name) +
+                                              " refused: a parameter write (Parameter Set Start 0E35) is under way; "
+                                              "it ends with 0E36/0E3A or 10 s without Set");
     auto& target = *cpus_[request.target];
     if (spec->control_cpu_only() && request.target != 0)
         return reply.error(end_code(profile.not_supported_code),
@@ -172,6 +178,11 @@ Outcome Engine::execute(const Request& request, Session& session) {
         return outcome;
     }
     if (ctx.restarted) return reply.drop(Outcome::Action::Restart, "");   // §5.6: no response on success
+    if (!ctx.silent.empty()) {   // a node command meant for another device (docs/nodes.md)
+        auto outcome = reply.drop(Outcome::Action::Silent, std::move(ctx.silent) + "; not answered");
+        outcome.named = std::move(ctx.named);
+        return outcome;
+    }
     // 1E bit data come in whole bytes: an odd count gets a dummy 0 point
     // (binary packing already pads its last nibble).
     if (row_1e && row_1e->bit_data && request.header.codec == Codec::Ascii && !request.operands.devices.empty() &&

@@ -79,6 +79,15 @@ std::uint8_t FieldReader::u8(std::string_view what) { return static_cast<std::ui
 std::uint16_t FieldReader::u16(std::string_view what) { return static_cast<std::uint16_t>(number(2, what)); }
 std::uint32_t FieldReader::u32(std::string_view what) { return number(4, what); }
 
+std::vector<std::uint8_t> FieldReader::octets(std::size_t count, std::string_view what) {
+    std::vector<std::uint8_t> value(count);
+    for (std::size_t i = 0; i < count && ok(); ++i) {
+        const auto octet = static_cast<std::uint8_t>(number(1, what));
+        value[codec_ == Codec::Binary ? count - 1 - i : i] = octet;
+    }
+    return ok() ? value : std::vector<std::uint8_t>(count);
+}
+
 std::uint64_t FieldReader::u64(std::string_view what) {
     auto first = std::uint64_t{number(4, what)};
     auto second = std::uint64_t{number(4, what)};
@@ -262,6 +271,10 @@ void FieldWriter::number(std::uint32_t value, std::size_t bytes) {
     } else {
         devicemodel::append_hex(out_, value, static_cast<unsigned>(bytes * 2));
     }
+}
+
+void FieldWriter::octets(std::span<const std::uint8_t> value) {
+    for (std::size_t i = 0; i < value.size(); ++i) number(value[codec_ == Codec::Binary ? value.size() - 1 - i : i], 1);
 }
 
 void FieldWriter::u64(std::uint64_t value) {

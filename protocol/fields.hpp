@@ -87,6 +87,10 @@ public:
     std::vector<std::uint16_t> words(std::size_t count, std::string_view what);
     // Bytes carried as they are in both codecs (loopback data, model names).
     std::span<const std::uint8_t> raw(std::size_t count, std::string_view what);
+    // A value of `count` octets written as SLMP writes numbers: binary least
+    // significant octet first, ASCII two hex digits an octet, most significant
+    // first (MAC and IP addresses, JA §3.12). Returned most significant first.
+    std::vector<std::uint8_t> octets(std::size_t count, std::string_view what);
 
     // Fails with C061 when bytes are left over. Returns ok().
     bool finish();
@@ -130,6 +134,8 @@ public:
     void bits(std::span<const std::uint8_t> points);
     void words(std::span<const std::uint16_t> values);
     void raw(std::span<const std::uint8_t> bytes);
+    // The counterpart of FieldReader::octets: `value` most significant octet first.
+    void octets(std::span<const std::uint8_t> value);
 
     std::vector<std::uint8_t>& bytes() { return out_; }
 

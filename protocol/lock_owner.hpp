@@ -7,6 +7,7 @@
 
 #include <arpa/inet.h>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -26,6 +27,16 @@ inline std::uint64_t lock_owner(const Peer& peer, std::uint64_t session_id) {
         return kUdpOwnerBit | (std::uint64_t{ntohl(v4.s_addr)} << 16) | peer.port;
     auto hashed = std::hash<std::string>{}(peer.endpoint());
     return kUdpOwnerBit | kUdpHashedBit | (hashed & (kUdpHashedBit - 1));
+}
+
+// The sender's IPv4 address as octets (Status Read2 0E53 compares it with
+// the node's partner); 0.0.0.0 when the peer is not IPv4.
+inline std::array<std::uint8_t, 4> peer_ipv4(const Peer& peer) {
+    in_addr v4{};
+    if (inet_pton(AF_INET, peer.address.c_str(), &v4) != 1) return {};
+    const auto host = ntohl(v4.s_addr);
+    return {static_cast<std::uint8_t>(host >> 24), static_cast<std::uint8_t>(host >> 16),
+            static_cast<std::uint8_t>(host >> 8), static_cast<std::uint8_t>(host)};
 }
 
 // "udp:127.0.0.1:50312" for an IPv4 UDP owner; nullopt for a connection's id.

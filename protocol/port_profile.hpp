@@ -49,6 +49,10 @@ struct PortProfile {
     // network/station on (docs/plants.md, "Networks and routes"); a CPU's
     // built-in port reaches only its own station (4A01/4A02).
     bool relays = false;
+    // The port is an SLMP-compatible device's (JA §3.12-3.14): it serves the
+    // node commands 0E30-0E53. The Mitsubishi CPUs' and modules' ports are
+    // their clients (iQ Sensor Solution) and answer C059 (docs/nodes.md).
+    bool node_commands = false;
     // Commands per connection (SLMP Reference Manual §3.3): 1 + pipeline_buffer ÷ connections
     // requests may wait in the port's receive buffer; 0 = no limit. Requests
     // beyond it get `pipeline_over_limit` (docs/end-codes.md: CEE0).

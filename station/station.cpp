@@ -19,6 +19,7 @@
 #include "station/inbox.hpp"
 #include "station/link_scan.hpp"
 #include "station/log_outcome.hpp"
+#include "station/node_identity.hpp"
 #include "station/persistence.hpp"
 #include "station/response_timing.hpp"
 #include "station/scan_loop.hpp"
@@ -61,6 +62,7 @@ Station::Station(const station::Home& home, const config::ServerConfig& config)
     config::attach_hardware(cpu_, config_);
     config::attach_drives(cpu_, config_);
     config::declare_labels(cpu_, config_.labels);
+    cpu_.node().identity() = node_identity(config_, cpu_.profile());   // what node search reports (docs/nodes.md)
     for (const auto& cpu : config_.cpus) {
         auto profile = config::resolve_profile(cpu);
         other_cpus_.push_back(std::make_unique<devicemodel::Cpu>(std::move(profile.cpu)));
@@ -311,6 +313,9 @@ Handled Station::serve(protocol::Request request, std::span<const std::uint8_t> 
     TouchedAtExit touch_after{*this};
     activity_.request_starting();
     session.file_owner = protocol::lock_owner(peer, session.id);   // UDP: each peer its own (docs/files.md)
+    session.peer_ipv4 = protocol::peer_ipv4(peer);                 // the node commands' sender (docs/nodes.md)
+    session.local_port = peer.local_port;
+    session.now = scan_ ? scan_->clock().now() : cpu_.runtime().now();   // the node's write timeout (docs/nodes.md)
     auto started = std::chrono::steady_clock::now();
     // Decoded once (handle() or schedule()); the scenario hook sits between decode and execute.
     scenarios::Incoming incoming{std::move(request)};

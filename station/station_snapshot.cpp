@@ -47,6 +47,7 @@ CpuSnapshot take(devicemodel::Cpu& cpu) {
     for (const auto& [io, module] : cpu.modules()) s.modules[io] = encode(module->memory, profile);
     for (const auto& [number, memory] : cpu.networks()) s.networks[number] = encode(*memory, profile);
     if (auto* own = cpu.own_station_buffer()) s.station_buffer = encode(*own, profile);
+    s.node = cpu.node();
     return s;
 }
 
@@ -59,6 +60,7 @@ void give_back(const CpuSnapshot& s, devicemodel::Cpu& cpu, const std::string& n
         if (auto* memory = cpu.network(number)) put_back(bytes, *memory, cpu, name + " network " + std::to_string(number));
     if (auto* own = cpu.own_station_buffer(); own && !s.station_buffer.empty())
         put_back(s.station_buffer, *own, cpu, name + " station buffer");
+    if (s.has_node) cpu.node() = s.node;
     if (s.has_runtime) cpu.runtime() = s.runtime;
     else cpu.runtime().set_switch(cpu.memory(), s.run_switch);
 }
@@ -144,6 +146,7 @@ StationSnapshot decode_station_file(std::span<const std::uint8_t> bytes, const s
         if (snapshot.cpus.size() <= cpu) snapshot.cpus.resize(cpu + 1);
         auto& c = snapshot.cpus[cpu];
         c.has_runtime = false;
+        c.has_node = false;   // the file form carries no node (docs/nodes.md)
         if (rest.empty()) c.memory = std::move(blob);
         else if (rest.rfind("module ", 0) == 0) c.modules[static_cast<std::uint16_t>(std::stoul(rest.substr(7)))] = std::move(blob);
         else if (rest.rfind("network ", 0) == 0) c.networks[static_cast<std::uint16_t>(std::stoul(rest.substr(8)))] = std::move(blob);

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "devicemodel/node.hpp"
 #include "devicemodel/runtime.hpp"
 #include "scenarios/scenario.hpp"
 
@@ -33,6 +34,10 @@ struct CpuSnapshot {
     std::map<std::uint16_t, std::vector<std::uint8_t>> modules;       // by U number (buffer memory G)
     std::map<std::uint16_t, std::vector<std::uint8_t>> networks;      // by network No. (link devices)
     std::vector<std::uint8_t> station_buffer;                         // the port's own, when the profile has one
+    // The node of the node commands (identity after IP Address Set, parameters,
+    // a write under way; docs/nodes.md): in memory only, not in the file form.
+    devicemodel::Node node;
+    bool has_node = true;                                             // false: read from a file
 };
 
 struct StationSnapshot {

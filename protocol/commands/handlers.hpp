@@ -84,4 +84,20 @@ EndCode file_close(CommandContext& ctx);
 EndCode password_unlock(CommandContext& ctx);
 EndCode password_lock(CommandContext& ctx);
 
+// node.cpp — the node commands of the Japanese manual (JA §3.12-3.14): Node
+// Search 0E30, IP Address Set 0E31, Device Info Compare 0E32, Parameter Get
+// 0E33 / Set 0E34 / Set Start 0E35 / Set End 0E36 / Set Cancel 0E3A, Status
+// Read 0E44, Communication Setting Get 0E45, Status Read2 0E53.
+EndCode node_search(CommandContext& ctx);
+EndCode ip_address_set(CommandContext& ctx);
+EndCode device_info_compare(CommandContext& ctx);
+EndCode parameter_get(CommandContext& ctx);
+EndCode parameter_set(CommandContext& ctx);
+EndCode parameter_set_start(CommandContext& ctx);
+EndCode parameter_set_end(CommandContext& ctx);
+EndCode parameter_set_cancel(CommandContext& ctx);
+EndCode status_read(CommandContext& ctx);
+EndCode status_read2(CommandContext& ctx);
+EndCode communication_setting_get(CommandContext& ctx);
+
 }  // namespace slmp::protocol::commands

@@ -103,5 +103,11 @@ TEST_CASE("command table: find_command and find_any_row", "[table]") {
     CHECK(find_command(0x041A, 0x0000)->name == "Array Label Read");
     CHECK_FALSE(find_command(0x041A, 0x0001));   // labels: subcommand 0000 only
     CHECK(find_command(0x141B, 0x0000)->writes());
-    CHECK_FALSE(find_any_row(0x0E30));
+    CHECK_FALSE(find_any_row(0x0E40));   // between the node commands 0E3A and 0E44: none
+}
+
+TEST_CASE("command table: the node commands 0E30-0E53 (JA §3.12-3.14) and the parameter write sequence's rows", "[table][node]") {
+    CHECK(commands_where(&CommandSpec::node_command) ==
+          std::set<std::uint16_t>{0x0E30, 0x0E31, 0x0E32, 0x0E33, 0x0E34, 0x0E35, 0x0E36, 0x0E3A, 0x0E44, 0x0E45, 0x0E53});
+    CHECK(commands_where(&CommandSpec::parameter_write) == std::set<std::uint16_t>{0x0E34, 0x0E35, 0x0E36, 0x0E3A});
 }

@@ -39,6 +39,7 @@ TEST_CASE("differential: every command-table row is generated, as whole frames, 
     }
     for (const auto& row : protocol::all_commands()) {
         if (row.command == 0x1006) continue;   // Remote RESET restarts the CPU: left out on purpose
+        if (row.command == 0x0E35) continue;   // Parameter Set Start locks a node for 10 s: likewise
         auto key = devicemodel::hex4(row.command) + "/" + devicemodel::hex4(row.subcommand) + " ";
         INFO(row.name);
         CHECK(labelled.count(key) == 1);

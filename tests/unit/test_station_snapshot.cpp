@@ -63,6 +63,30 @@ TEST_CASE("station snapshot: restore gives device memory, buffer memory and the 
     }
 }
 
+TEST_CASE("station snapshot: the node (identity, parameters, a write under way) comes back; the file form has none", "[station][snapshot][node]") {
+    slmp::station::Station station(slmp::config::load_profile("R08CPU"), {});
+    auto& node = station.cpu().node();
+    node.identity().host_name = "before";
+    auto snapshot = station.snapshot();
+
+    const slmp::devicemodel::Node::TimePoint now{};
+    node.identity().host_name = "after";
+    REQUIRE(node.start(1, now) == slmp::devicemodel::Node::Verdict::Ok);
+    REQUIRE(node.set(1, {{0x0001, {0x12, 0x34}}}, now) == slmp::devicemodel::Node::Verdict::Ok);
+    REQUIRE(node.end(1, now) == slmp::devicemodel::Node::Verdict::Ok);
+    REQUIRE(node.start(2, now) == slmp::devicemodel::Node::Verdict::Ok);
+
+    station.restore(snapshot, false);
+    CHECK(node.identity().host_name == "before");
+    CHECK(node.parameter(0x0001)->value == std::vector<std::uint8_t>{0, 0});
+    CHECK_FALSE(node.busy(now));
+
+    node.identity().host_name = "kept";
+    auto file = slmp::station::encode_station_file(station.snapshot());
+    station.restore(slmp::station::decode_station_file(file, "test.snap"), false);
+    CHECK(node.identity().host_name == "kept");
+}
+
 TEST_CASE("station snapshot: take and restore times of an R08CPU with default sizes", "[station][snapshot][timing]") {
     slmp::station::Station station(slmp::config::load_profile("R08CPU"), {});
     auto& cpu = station.cpu();

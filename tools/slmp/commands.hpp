@@ -2,7 +2,7 @@
 // options it accepts, the function that runs it). Each family lives in its own
 // file: device_commands.cpp (read, write), random_commands.cpp, monitor_command.cpp,
 // label_commands.cpp, remote_commands.cpp (run, stop, pause, reset, latch-clear), info_commands.cpp
-// (type, selftest), password_commands.cpp (lock, unlock).
+// (type, selftest), node_commands.cpp (nodes, status), password_commands.cpp (lock, unlock).
 #pragma once
 
 #include <initializer_list>
@@ -50,6 +50,8 @@ void run_remote_reset(Invocation& in);
 void run_remote_latch_clear(Invocation& in);
 void run_type(Invocation& in);
 void run_selftest(Invocation& in);
+void run_nodes(Invocation& in);
+void run_status(Invocation& in);
 void run_lock(Invocation& in);
 void run_unlock(Invocation& in);
 void run_ondemand(Invocation& in);

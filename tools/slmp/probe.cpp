@@ -548,6 +548,7 @@ void Prober::commands() {
     // (a family may serve one subcommand form of a command and not another).
     std::map<std::uint16_t, bool> any_served;   // rows the family serves
     std::map<std::uint16_t, bool> served_any;   // all rows asked
+    bool node_served = false;                   // any of 0E30-0E53 answered
     for (const auto& row : protocol::all_commands()) {
         if (row.writes()) continue;
         if (!iqr_ && row.form == DeviceForm::IQR && row.device_command()) continue;   // iqr_subcommands says
@@ -556,6 +557,14 @@ void Prober::commands() {
         if (!request) continue;
         auto o = ask(*request);
         bool refused_here = o.kind != Kind::Answer || o.end_code == not_supported_;
+        // The node commands (docs/nodes.md) are a profile key of their own, not
+        // a family's: one served (any answer but not-supported, silence
+        // included for IP Address Set to no one's MAC) makes "node_commands".
+        if (row.node_command()) {
+            const bool answered = o.kind == Kind::Answer && o.end_code != not_supported_;
+            node_served |= answered;
+            continue;
+        }
         if (refused_here) listed.push_back(hex4(row.command) + "/" + hex4(row.subcommand) + " " + reaction(o));
         if (row.served_by(family_)) any_served[row.command] |= !refused_here;
         served_any[row.command] |= !refused_here;
@@ -574,6 +583,9 @@ void Prober::commands() {
     support("labels", {0x041C, 0x041A}, "041C/041A of a label that does not exist: any answer but not-supported");
     support("files", {0x1810, 0x1811, 0x1827}, "1810/1811/1827 on drive 4, a file that does not exist");
     support("buffer memory", {0x0613, 0x0601}, "0613 of word 0, 0601 of module 03E0");
+    if (node_served) profile_["node_commands"] = true;
+    fact("node commands", node_served ? "served" : "refused",
+         "0E30 node search, 0E32/0E33/0E44/0E45/0E53 reads, 0E34/0E36/0E3A without a start (CF31 on a node)");
     auto refused = nlohmann::ordered_json::array();
     for (const auto& [command, served_once] : any_served)
         if (!served_once) refused.push_back(hex4(command));
