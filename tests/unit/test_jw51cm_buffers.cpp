@@ -6,11 +6,16 @@
 // nothing. The definitions come from the unit's parameter image (octal 1000–1577).
 #include <catch2/catch.hpp>
 
+#include <memory>
+#include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "config/config.hpp"
 #include "frontends/jw51cm/buffers.hpp"
 #include "frontends/jw51cm/computer_link.hpp"
+#include "frontends/jw51cm/face.hpp"
 
 namespace {
 
@@ -340,4 +345,37 @@ TEST_CASE("JW-51CM buffer parameters are checked as the unit checks them", "[jw5
     CHECK_THAT(with(01410, {0x00, 0x08, 0x00, 0x01, 0x00, 0x01, 0x80, 0x80}), Catch::Contains("file_bytes"));   // 32 KB in a 16 KB file
     CHECK_THAT(with(01000, {0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x00, 0x80}), Catch::Contains("designated buffer 00"));   // 64 KB
     CHECK_THAT(with(01370, {0xFC, 0x1F, 0x00, 0x00, 0x00, 0x00, 0x00, 0xC0}), Catch::Contains("info area"));
+}
+
+TEST_CASE("JW-51CM unit: an unconfirmed ring read is the unit's RAM, not in snapshots; the ring's HTTP resource", "[jw51cm][jw51cm-buffers]") {
+    devicemodel::Cpu cpu{config::load_profile("R08CPU").cpu};
+    auto settings = jw51cm::face().defaults();
+    auto& options = *std::static_pointer_cast<jw51cm::Options>(settings.options);
+    set_parameters(options, 01410, manual_ring(jw51cm::kToHost));
+    auto unit = jw51cm::face().make_unit(cpu, settings);
+    auto routes = jw51cm::face().api_routes();
+    auto route = [&](bool post, std::string_view pattern) {
+        for (const auto& r : routes)
+            if (r.post == post && r.pattern == pattern) return r.handler;
+        FAIL("no route " << pattern);
+        return routes[0].handler;
+    };
+    auto put = route(true, "rings/{number}")(*unit, {"1"}, R"({"data": "0A0B"})");
+    REQUIRE(put.status == 200);
+    CHECK(nlohmann::json::parse(put.body)["wp"] == 2);
+    frontends::Parts before;
+    unit->save(before);
+    auto ask = [&](Bytes after_id) { return unit->stream(request(after_id), nullptr, {}).response; };
+    CHECK(ask({0x29, 0x01, 0x81, 0x01, 0x00, 0x00}) ==
+          std::string(reinterpret_cast<const char*>(response({0x29, 0x00, 0x01, 0x01, 0x00, 0x00, 0x02, 0x00, 0x00, 0x0A, 0x0B}).data()), 53));
+    auto shown = nlohmann::json::parse(route(false, "rings/{number}")(*unit, {"01"}, "").body);
+    CHECK(shown["awaiting_confirm"] == nlohmann::json({{"from", 0}, {"bytes", 2}}));
+    unit->restore(before);
+    shown = nlohmann::json::parse(route(false, "rings/{number}")(*unit, {"1"}, "").body);
+    CHECK(shown["awaiting_confirm"].is_null());
+    // The confirm finds nothing to confirm: RP stays.
+    CHECK(ask({0x29, 0x01, 0x82, 0x01, 0x00, 0x00}) ==
+          std::string(reinterpret_cast<const char*>(response({0x29, 0x00, 0x01, 0x01, 0x00, 0x00, 0x00, 0x00, 0x01}).data()), 51));
+    CHECK(route(true, "rings/{number}/take")(*unit, {"1"}, "").status == 409);   // PLC -> host: the PLC does not take
+    CHECK(route(false, "rings/{number}")(*unit, {"G"}, "").status == 400);
 }
