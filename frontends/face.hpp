@@ -10,7 +10,7 @@
 //   (the JSON section, the scenario "protocol", the activity and metrics
 //   label, the ready file's key), its settings (the JSON section's keys, the
 //   command-line options it adds), its ports and log names, its scenario
-//   command syntax, and how it makes a `Unit`.
+//   command syntax, its own HTTP resources (api_routes()), and how it makes a `Unit`.
 // - `Unit`: one station's instance of a face on its CPU — its framing and
 //   command handling (stream()/datagram()), its per-connection state
 //   (new_session()), its address names for the HTTP API (resolve_name()) and
@@ -108,6 +108,19 @@ public:
     virtual void restore(const Parts&) {}
 };
 
+// A face's own HTTP resource, served at /api/<face name>/<pattern> on the
+// station's thread with the station's unit of that face (the JW-51CM's ring
+// buffers: docs/api.md). The core routes it; the face reads the body and answers.
+struct ApiAnswer {
+    unsigned status = 200;   // 200: `body` is JSON text; 4xx: `body` is the error's message (naming the fix)
+    std::string body;
+};
+struct ApiRoute {
+    bool post = false;          // POST, else GET
+    std::string_view pattern;   // after /api/<face name>/: "rings/{number}"
+    ApiAnswer (*handler)(Unit& unit, const std::vector<std::string>& captures, const std::string& body);
+};
+
 // One station's settings of a face: its ports, and the face's own options.
 struct Settings {
     const Face* face = nullptr;
@@ -158,6 +171,9 @@ public:
     // The problem with `settings` on this CPU's memory (empty: none; --check-config, start-up).
     virtual std::string check(devicemodel::Cpu& cpu, const Settings& settings) const = 0;
     virtual std::unique_ptr<Unit> make_unit(devicemodel::Cpu& cpu, const Settings& settings) const = 0;
+
+    // Its own HTTP resources (none for most faces); `handler` gets a Unit this face made.
+    virtual std::span<const ApiRoute> api_routes() const { return {}; }
 };
 
 // The registered faces, in registration order (frontends/registry.cpp).

@@ -6,8 +6,8 @@ namespace slmp::jw51cm {
 
 namespace {
 
-// §7.1 with §3.2's lengths. Modes: reads 0; data writes 1 (30/34 inferred);
-// program and system memory writes 2 (§5.3).
+// §7.1 with §3.2's lengths. Modes: reads 0; data writes 1 (30/34 inferred;
+// 38 by its error 10, §19.10); program and system memory writes 2 (§5.3).
 constexpr std::array kCommands{
     CommandRow{0xE9, "write-permission mode read", 0, Tail::None, 0, Needs::Any, mode_read},
     CommandRow{0xF9, "write-permission mode set", 1, Tail::None, 0, Needs::Any, mode_set},
@@ -28,6 +28,14 @@ constexpr std::array kCommands{
     CommandRow{0xB3, "time set", 4, Tail::None, 1, Needs::Any, time_set},
     CommandRow{0xE8, "PLC run-state monitor", 0, Tail::None, 0, Needs::Any, run_monitor},
     CommandRow{0xF8, "PLC stop / release stop", 1, Tail::None, 0, Needs::Any, run_stop},
+    CommandRow{0x28, "designated buffer read", 6, Tail::None, 0, Needs::Any, buffer_read},
+    CommandRow{0x38, "designated buffer write", 6, Tail::L, 1, Needs::Any, buffer_write, 4},
+    CommandRow{0x68, "designated buffer info read", 1, Tail::None, 0, Needs::Any, buffer_info_read},
+    CommandRow{0x78, "designated buffer info write", 8, Tail::None, 1, Needs::Any, buffer_info_write},
+    CommandRow{0x29, "ring buffer read", 5, Tail::None, 0, Needs::Any, ring_read},
+    CommandRow{0x39, "ring buffer write", 5, Tail::L, 1, Needs::Any, ring_write},
+    CommandRow{0x69, "ring buffer info read", 1, Tail::None, 0, Needs::Any, ring_info_read},
+    CommandRow{0x79, "ring buffer info write", 13, Tail::None, 1, Needs::Any, ring_info_write},
 };
 
 }  // namespace
@@ -44,8 +52,8 @@ std::optional<std::size_t> request_length(const CommandRow& row, std::span<const
     constexpr std::size_t kText = kHeaderBytes + 3;
     std::size_t length = kText + row.fixed;
     if (row.tail == Tail::None) return length;
-    if (request.size() < kText + 5) return std::nullopt;
-    std::size_t l = request[kText + 3] | static_cast<std::size_t>(request[kText + 4]) << 8;
+    if (request.size() < kText + row.length_at + 2) return std::nullopt;
+    std::size_t l = request[kText + row.length_at] | static_cast<std::size_t>(request[kText + row.length_at + 1]) << 8;
     return length + (row.tail == Tail::TwoL ? 2 * l : l);
 }
 

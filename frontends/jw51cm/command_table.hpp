@@ -14,7 +14,7 @@
 namespace slmp::jw51cm {
 
 // How the request's length continues after the fixed bytes: with L (text bytes
-// 3–4, little-endian) bytes, or 2·L (program steps).
+// `length_at`, `length_at`+1, little-endian) bytes, or 2·L (program steps).
 enum class Tail : std::uint8_t { None, L, TwoL };
 enum class Needs : std::uint8_t { Any, Stopped };
 
@@ -34,6 +34,7 @@ struct CommandRow {
     std::uint8_t min_mode;    // write-permission mode needed (§6.1): 0 reads, 1 data writes, 2 program/system
     Needs needs;              // 14 and 54 need the PLC stopped (RSLT 06)
     Handler handler;
+    std::size_t length_at = 3;   // where L sits in the text: 3 (34, 54, 14, 39), 4 (38: DB TAG IP L)
 };
 
 std::span<const CommandRow> command_table();
@@ -60,5 +61,14 @@ Rslt date_set(Context&);
 Rslt time_set(Context&);
 Rslt run_monitor(Context&);
 Rslt run_stop(Context&);
+// buffer_handlers.cpp
+Rslt buffer_read(Context&);
+Rslt buffer_write(Context&);
+Rslt buffer_info_read(Context&);
+Rslt buffer_info_write(Context&);
+Rslt ring_read(Context&);
+Rslt ring_write(Context&);
+Rslt ring_info_read(Context&);
+Rslt ring_info_write(Context&);
 
 }  // namespace slmp::jw51cm

@@ -6,6 +6,7 @@
 // Knows no sockets and no SLMP.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -32,10 +33,26 @@ struct Options {
     std::map<std::uint32_t, std::uint8_t> timer_attributes;   // TADR -> ATTR (§7.2 table); others 00 "unused"
     std::uint32_t system_bytes = 02200;        // #0000–#2177
     std::uint32_t program_steps = 0x7E00;      // per PSEG (08, 09)
+    // The unit's network parameter image (§15, octal 0000–3777): the designated
+    // buffers at 1000–1377 and the ring buffers at 1400–1577 are read from it
+    // (frontends/jw51cm/buffers.hpp); the rest is 00.
+    std::vector<std::uint8_t> parameters = std::vector<std::uint8_t>(04000, 0);
 };
 
 enum class Rslt : std::uint8_t {
     Ok = 0x00, Format = 0x01, NotStopped = 0x06, WriteMode = 0x10, TimerWhileStopped = 0x13,
+    // §9, §10: the ring buffers.
+    RingUndefined = 0x40, RingInvalid = 0x41, RingPointers = 0x42, RingFull = 0x43, RingTooLarge = 0x44,
+    // §8, §10: the designated buffers.
+    BufferUndefined = 0x48, BufferInvalid = 0x49, BufferLength = 0x4A,
+};
+
+// A ring buffer's read or write that waits for the host's confirm (29/39 FUN 81):
+// the pointer it started from and the bytes it moved. The unit's RAM, not data memory.
+struct PendingConfirm {
+    bool open = false;
+    std::uint16_t from = 0;
+    std::uint16_t length = 0;
 };
 
 class ComputerLink {
@@ -69,6 +86,9 @@ public:
     std::vector<std::uint8_t> program;   // PSEG 08 then 09, 2 bytes a step
     std::chrono::seconds clock_offset{0};   // the PLC calendar = host UTC + offset
     std::optional<std::chrono::system_clock::time_point> clock_stopped;   // B3 CTRL 01
+    // Per ring buffer 0–F: the read or write awaiting the host's confirm (FUN 82/83), unit-wide
+    // (whichever connection or transport confirms; inferred, §19.4).
+    std::array<PendingConfirm, 16> ring_confirms{};
     std::chrono::system_clock::time_point now() const { return clock_(); }
 
 private:

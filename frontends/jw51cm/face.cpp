@@ -2,12 +2,15 @@
 // docs/jw51cm.md) and its unit, the ComputerLink of one station.
 #include "frontends/jw51cm/face.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 
 #include "config/json_path.hpp"
 #include "devicemodel/byte_reader.hpp"
 #include "devicemodel/hex.hpp"
 #include "frontends/jw51cm/addresses.hpp"
+#include "frontends/jw51cm/buffers.hpp"
 #include "frontends/jw51cm/command_table.hpp"
 #include "frontends/jw51cm/computer_link.hpp"
 
@@ -33,6 +36,55 @@ std::optional<PortConfig> optional_port(const JsonAt& at, PortConfig port) {
 }
 
 constexpr std::size_t kClockBytes = 17;
+
+// Hex bytes, spaces allowed between them: "00 08 00 01 0C 00 04 80".
+std::optional<std::vector<std::uint8_t>> hex_bytes(std::string_view text) {
+    std::vector<std::uint8_t> out;
+    std::string digits;
+    for (char c : text) {
+        if (c == ' ') continue;
+        if (!std::isxdigit(static_cast<unsigned char>(c))) return std::nullopt;
+        digits += c;
+    }
+    if (digits.size() % 2 != 0) return std::nullopt;
+    for (std::size_t i = 0; i < digits.size(); i += 2) out.push_back(static_cast<std::uint8_t>(std::stoul(digits.substr(i, 2), nullptr, 16)));
+    return out;
+}
+
+std::string hex_text(std::span<const std::uint8_t> bytes) {
+    std::string out;
+    for (auto b : bytes) out += devicemodel::hex2(b);
+    return out;
+}
+
+// "parameters": {"1410": "00 08 00 01 0C 00 04 80"} — the network parameter
+// image (§15) by octal address, as the JW-14PG and JW-52SP write it; only the
+// buffer blocks 1000–1577 mean something to the simulated unit, so only they
+// may be given, and they are checked as the unit checks them when they are written.
+void parse_parameters(const JsonAt& at, Options& options) {
+    at.expect_object();
+    for (const auto& [key, _] : at.json().items()) {
+        auto value = at[key];
+        std::size_t used = 0;
+        unsigned long address = 0;
+        try {
+            address = std::stoul(key, &used, 8);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != key.size() || address < kDesignatedParameters || address >= kRingParameters + 8 * kRingBuffers)
+            value.fail("'" + key + "' is not a buffer parameter address",
+                       "write it in octal, 1000-1377 (designated buffers) or 1400-1577 (ring buffers), e.g. \"1410\"");
+        auto bytes = value.json().is_string() ? hex_bytes(value.string()) : std::nullopt;
+        if (!bytes || bytes->empty()) value.fail("not hex bytes", "write the bytes from this address on, e.g. \"00 08 00 01 0C 00 04 80\"");
+        if (address + bytes->size() > kRingParameters + 8 * kRingBuffers)
+            value.fail("runs past parameter 1577", "the buffer parameters end at 1577 (octal)");
+        std::copy(bytes->begin(), bytes->end(), options.parameters.begin() + static_cast<std::ptrdiff_t>(address));
+    }
+    MemoryMap map(options.file_bytes, options.timers);
+    if (auto problem = check_parameters(options.parameters, map); !problem.empty())
+        at.fail(problem, "the unit refuses such parameters when they are written (its ERROR lamp); docs/jw51cm.md");
+}
 
 class Unit final : public frontends::Unit {
 public:
@@ -75,6 +127,7 @@ public:
         return {};
     }
     void restore(const frontends::Parts& parts) override {
+        link_.ring_confirms = {};   // the unit's RAM; the pointers in memory are the snapshot's now
         if (auto it = parts.find("jw51cm write mode"); it != parts.end()) link_.write_mode_ = it->second[0];
         if (auto it = parts.find("jw51cm system memory"); it != parts.end()) link_.system_memory = it->second;
         if (auto it = parts.find("jw51cm program"); it != parts.end()) link_.program = it->second;
@@ -89,6 +142,8 @@ public:
                 link_.clock_stopped.reset();
         }
     }
+
+    ComputerLink& link() { return link_; }
 
 private:
     // A result reported: the COM (when the request reached it) and the RSLT answered.
@@ -156,7 +211,7 @@ public:
 
     void parse(const JsonAt& at, frontends::Settings& j) const override {
         at.only_keys({"tcp_port", "udp_port", "max_connections", "idle_timeout_ms", "partial_frame_timeout_ms",
-                      "file_bytes", "timers", "timer_attributes"});
+                      "file_bytes", "timers", "timer_attributes", "parameters"});
         auto& options = options_of(j);
         if (at.has("tcp_port")) j.tcp = optional_port(at["tcp_port"], j.tcp.value_or(kTcp));
         if (at.has("udp_port")) j.udp = optional_port(at["udp_port"], j.udp.value_or(kUdp));
@@ -193,6 +248,7 @@ public:
                 options.timer_attributes[static_cast<std::uint32_t>(value)] = static_cast<std::uint8_t>(code);
             }
         }
+        if (at.has("parameters")) parse_parameters(at["parameters"], options);
     }
 
     // A JW-51CM COM is two hex digits, compared in uppercase.
@@ -214,7 +270,145 @@ public:
     std::unique_ptr<frontends::Unit> make_unit(devicemodel::Cpu& cpu, const frontends::Settings& s) const override {
         return std::make_unique<Unit>(cpu, options_of(s));
     }
+
+    std::span<const frontends::ApiRoute> api_routes() const override;
 };
+
+// The ring buffers seen from the PLC side (docs/api.md#jw-51cm-ring-buffers):
+// the ladder program of the real unit fills a PLC -> host ring and empties a
+// host -> PLC one; here a test or a tool does it over HTTP.
+using frontends::ApiAnswer;
+using nlohmann::json;
+
+ApiAnswer refused(unsigned status, std::string message) { return {status, std::move(message)}; }
+
+std::optional<unsigned> ring_number(const std::string& text) {
+    std::size_t used = 0;
+    unsigned long number = kRingBuffers;
+    try {
+        number = std::stoul(text, &used, 16);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || number >= kRingBuffers) return std::nullopt;
+    return static_cast<unsigned>(number);
+}
+
+RingBuffer read_ring(ComputerLink& link, unsigned number) {
+    return ring_buffer(link.options().parameters, link.map(), ByteAccess(link.cpu().memory(), link.map()), number);
+}
+
+json ring_json(const ComputerLink& link, const RingBuffer& r, unsigned number) {
+    json out{{"ring", number},
+             {"definition", r.defined() ? ((r.dinf & ~kDinfInvalid) == kDinfDirect ? "direct" : "indirect") : "none"}};
+    if (!r.defined()) return out;
+    out["valid"] = r.valid();
+    out["info"] = {{"file", r.info.file}, {"address", octal(r.info.address, 6)}};
+    out["direction"] = r.to_host() ? "plc-to-host" : r.direction == kToPlc ? "host-to-plc" : "invalid";
+    out["file"] = r.file;
+    out["address"] = octal(r.address(), 6);
+    out["bytes"] = r.size();
+    out["wp"] = r.wp;
+    out["rp"] = r.rp;
+    if (r.valid() && r.pointers_inside()) {
+        out["unread"] = r.unread();
+        out["free"] = r.free();
+    }
+    const auto& pending = link.ring_confirms[number];
+    out["awaiting_confirm"] = pending.open ? json{{"from", pending.from}, {"bytes", pending.length}} : json(nullptr);
+    return out;
+}
+
+// The checks both PLC-side actions make: the ring exists, is valid, runs the way wanted.
+std::optional<ApiAnswer> unusable(const RingBuffer& r, unsigned number, bool to_host, std::string_view other_way) {
+    auto name = "ring buffer " + octal(number, 1);
+    if (!r.defined())
+        return refused(404, name + " is not defined; give it in the configuration's \"jw51cm\": {\"parameters\": {\"" +
+                                octal(kRingParameters + 8 * number, 4) + "\": ...}} (docs/jw51cm.md)");
+    if (!r.valid()) return refused(409, name + "'s indirect definition (its info area +4..+7) is invalid; fix it with 79 or /api/devices");
+    if (r.to_host() != to_host) return refused(409, name + " runs " + (to_host ? "host -> PLC" : "PLC -> host") + "; " + std::string(other_way));
+    if (!r.pointers_inside())
+        return refused(409, name + "'s WP " + std::to_string(r.wp) + " or RP " + std::to_string(r.rp) + " is outside its " +
+                                std::to_string(r.size()) + " bytes; set them with 79 or /api/devices");
+    return std::nullopt;
+}
+
+json body_of(const std::string& text) {
+    if (text.empty()) return json::object();
+    auto body = json::parse(text, nullptr, false);
+    return body.is_discarded() ? json() : body;
+}
+
+Unit& unit_of(frontends::Unit& unit) { return static_cast<Unit&>(unit); }
+
+ApiAnswer list_rings(frontends::Unit& unit, const std::vector<std::string>&, const std::string&) {
+    auto& link = unit_of(unit).link();
+    auto list = json::array();
+    for (unsigned n = 0; n < kRingBuffers; ++n) list.push_back(ring_json(link, read_ring(link, n), n));
+    return {200, json{{"rings", std::move(list)}}.dump()};
+}
+
+ApiAnswer get_ring(frontends::Unit& unit, const std::vector<std::string>& captures, const std::string&) {
+    auto number = ring_number(captures.at(0));
+    if (!number) return refused(400, "'" + captures.at(0) + "' is not a ring buffer; use 0-F");
+    auto& link = unit_of(unit).link();
+    return {200, ring_json(link, read_ring(link, *number), *number).dump()};
+}
+
+// The PLC puts data into a PLC -> host ring at WP and moves WP, never onto RP.
+ApiAnswer put_ring(frontends::Unit& unit, const std::vector<std::string>& captures, const std::string& text) {
+    auto number = ring_number(captures.at(0));
+    if (!number) return refused(400, "'" + captures.at(0) + "' is not a ring buffer; use 0-F");
+    auto body = body_of(text);
+    std::optional<std::vector<std::uint8_t>> data;
+    if (body.is_object() && body.size() == 1 && body.contains("data") && body["data"].is_string())
+        data = hex_bytes(body["data"].get<std::string>());
+    if (!data || data->empty()) return refused(400, "give the bytes as {\"data\": \"01020304\"} (hex, at least one byte)");
+    auto& link = unit_of(unit).link();
+    auto r = read_ring(link, *number);
+    if (auto no = unusable(r, *number, true, "the host writes it (39); take its data with POST /api/jw51cm/rings/N/take"))
+        return *no;
+    if (data->size() > r.free())
+        return refused(409, "ring buffer " + octal(*number, 1) + " has " + std::to_string(r.free()) + " bytes free, not " +
+                                std::to_string(data->size()) + "; the host reads it with 29 first");
+    ByteAccess memory(link.cpu().memory(), link.map());
+    put_ring_bytes(r, memory, r.wp, *data);
+    set_write_pointer(r, memory, r.wp + static_cast<std::uint32_t>(data->size()));
+    auto out = ring_json(link, r, *number);
+    out["written"] = data->size();
+    return {200, out.dump()};
+}
+
+// The PLC takes what the host wrote into a host -> PLC ring: from RP, then RP moves.
+ApiAnswer take_ring(frontends::Unit& unit, const std::vector<std::string>& captures, const std::string& text) {
+    auto number = ring_number(captures.at(0));
+    if (!number) return refused(400, "'" + captures.at(0) + "' is not a ring buffer; use 0-F");
+    auto body = body_of(text);
+    std::uint32_t wanted = 0;
+    bool good = body.is_object() && (body.empty() || (body.size() == 1 && body.contains("count") &&
+                                                       body["count"].is_number_unsigned() && body["count"].get<std::uint64_t>() <= 65536));
+    if (!good) return refused(400, "give {\"count\": N} (bytes, 0 or none for all unread) or no body");
+    if (body.contains("count")) wanted = body["count"].get<std::uint32_t>();
+    auto& link = unit_of(unit).link();
+    auto r = read_ring(link, *number);
+    if (auto no = unusable(r, *number, false, "the host reads it (29); fill it with POST /api/jw51cm/rings/N")) return *no;
+    auto count = wanted == 0 ? r.unread() : std::min(wanted, r.unread());
+    ByteAccess memory(link.cpu().memory(), link.map());
+    auto data = ring_bytes(r, memory, r.rp, count);
+    set_read_pointer(r, memory, r.rp + count);
+    auto out = ring_json(link, r, *number);
+    out["data"] = hex_text(data);
+    return {200, out.dump()};
+}
+
+constexpr std::array kRoutes{
+    frontends::ApiRoute{false, "rings", list_rings},
+    frontends::ApiRoute{false, "rings/{number}", get_ring},
+    frontends::ApiRoute{true, "rings/{number}", put_ring},
+    frontends::ApiRoute{true, "rings/{number}/take", take_ring},
+};
+
+std::span<const frontends::ApiRoute> Face::api_routes() const { return kRoutes; }
 
 }  // namespace
 

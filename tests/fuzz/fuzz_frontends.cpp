@@ -5,8 +5,10 @@
 // never more than it was given, and every answer has its protocol's shape: a
 // host-link record of at most 132 bytes (+ STX/ETX) ending in `*` CR, a JW
 // answer of the request's header, 45 00, COM, RSLT.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 
 #include "config/config.hpp"
@@ -41,8 +43,24 @@ void host_link(std::span<const std::uint8_t> data) {
     }
 }
 
+// Buffers of every kind, so 28-79 reach their handlers: designated 00 direct and
+// 01 indirect, rings 0 (PLC -> host) and 1 (host -> PLC) direct and 2 indirect;
+// the input can rewrite every info area and pointer with 34/35 after F9.
+slmp::jw51cm::Options with_buffers() {
+    slmp::jw51cm::Options options;
+    auto set = [&](std::size_t at, std::initializer_list<std::uint8_t> bytes) {
+        std::copy(bytes.begin(), bytes.end(), options.parameters.begin() + static_cast<std::ptrdiff_t>(at));
+    };
+    set(01000, {0x00, 0x0A, 0x00, 0x00, 0x00, 0x01, 0x00, 0x80});
+    set(01010, {0x00, 0x08, 0x00, 0x00, 0x00, 0x00, 0x00, 0xC0});
+    set(01400, {0x10, 0x08, 0x00, 0x01, 0x0C, 0x00, 0x04, 0x80});
+    set(01410, {0x20, 0x08, 0x00, 0x81, 0x10, 0x00, 0x01, 0x80});
+    set(01420, {0x30, 0x08, 0x00, 0x00, 0x00, 0x00, 0x00, 0xC0});
+    return options;
+}
+
 void computer_link(std::span<const std::uint8_t> data) {
-    static slmp::jw51cm::ComputerLink link{cpu(), slmp::jw51cm::Options{}};
+    static slmp::jw51cm::ComputerLink link{cpu(), with_buffers()};
     auto datagram = link.handle_datagram(data);
     if (!datagram.response.empty()) FUZZ_CHECK(datagram.response.size() >= 44, "a %zu-byte JW answer", datagram.response.size());
     while (!data.empty()) {
