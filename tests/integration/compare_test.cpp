@@ -259,6 +259,23 @@ TEST_CASE("compare: an answer far slower than the twin's is a time difference", 
     CHECK(d["text"].get<std::string>().find("(far apart: more than twice the shorter plus 100.000 ms)") != std::string::npos);
 }
 
+TEST_CASE("compare: in timing mode model the twin's answer time is its modelled one", "[compare][proxy][timing]") {
+    SimOptions plc_options = with_args({"--profile", "R08CPU", "--no-http"});
+    plc_options.config_json = R"({"devices": {"D100": 5}})";
+    SimProcess plc(plc_options);
+    SimOptions options = with_args({"--profile", "R08CPU", "--upstream", upstream_of(plc), "--compare", "--compare-slack", "600"});
+    options.config_json = R"({"timing": {"mode": "model", "ke_ms": 40, "kdt_ms": 0, "scan_wait": false, "jitter": 0}})";
+    SimProcess twin(options);
+    auto via = TcpClient::open(twin.tcp_port());
+    CHECK(show(ask(via, read_request(kBin, "D100"))) == show(expected_response(kBin, word_data(kBin, {5}))));
+
+    auto report = compare_report(twin);
+    INFO(report.dump(2));
+    const auto& d = report["differences"].at(0);
+    CHECK(d["kind"] == "bytes");
+    CHECK(d["twin"]["ms"] == 40.0);   // Ke + Kdt × 1 word, no scan wait, no jitter
+}
+
 TEST_CASE("compare: a plant station with \"compare\": true, its metric carries the station label", "[compare][proxy][plant]") {
     SimProcess plc(with_args({"--profile", "R08CPU", "--no-http"}));
     {

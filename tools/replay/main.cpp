@@ -100,7 +100,9 @@ Options parse(int argc, char** argv) {
                   << named
                   << "\nExit status: 0 every answer identical, 1 some answers differ or are missing,\n"
                      "2 bad options, an unreadable recording or no server.\n"
-                     "Reference: docs/scenarios.md \"Record & replay\".\n";
+                     "--to-scenario: 0 the scenario written, 2 bad options, an unreadable recording\n"
+                     "or a file it cannot write.\n"
+                     "Reference: docs/scenarios.md \"Record & replay\", docs/twin.md.\n";
         std::exit(0);
     }
     Options o;
