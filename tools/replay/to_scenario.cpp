@@ -128,9 +128,13 @@ ScenarioFromRecording to_scenario(const scenarios::Recording& recording, const c
     const double start = recording.exchanges.empty() ? 0 : recording.exchanges.front().t_ms;
     for (const auto& exchange : recording.exchanges) {
         auto request = engine.decode(exchange.request, protocol::DataCodePolicy::Auto);
-        if (!request.complete() || !request.has_command || request.header.kind == protocol::FrameKind::E1) continue;
+        if (!request.complete() || !request.has_command) continue;
         if (request.command != 0x0401 && request.command != 0x0403) continue;
         auto skip = [&](const std::string& why) { ++result.skipped[why]; };
+        if (request.header.kind == protocol::FrameKind::E1) {   // its answer has another shape
+            skip("a 1E frame");
+            continue;
+        }
         if (request.elsewhere || request.route_error != protocol::EndCode::Ok) {
             skip("addressed to another station");
             continue;
