@@ -171,6 +171,8 @@ TEST_CASE("slmp-replay --to-scenario: a recording's reads become a scenario that
     CHECK(r.err == "slmp-replay: 9 read(s) of 21 device(s): 6 timeline step(s) in " + out.string() +
                        "\n  1 read(s) not used: answered 4031\n");
 
+    // Byte for byte what tests/data/hmi_session.scenario.json holds (which the schema test checks too).
+    CHECK(read_text(out) == read_text(recording.parent_path() / "hmi_session.scenario.json"));
     const auto scenario = nlohmann::json::parse(read_text(out));
     CHECK(scenario["name"] == "hmi_session");
     nlohmann::json initial = {{"D100", 10}, {"D101", 20}, {"D102", 30}, {"D200", 2}, {"D201", 1}, {"M0", 1}, {"M3", 1}};
