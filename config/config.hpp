@@ -222,6 +222,13 @@ struct ServerConfig {
     // "HOST:PORT" over TCP and its answer comes back; empty: served here.
     std::string upstream;
     unsigned upstream_timeout_ms = 3000;   // the upstream's answer must come within this (else CF71)
+    // Differential mode (docs/twin.md, "Compare"): with an upstream, each
+    // request is also served here, from this station's own memory and
+    // profile, and every difference between the two answers is reported; the
+    // client gets the upstream's. Answer times further apart than twice the
+    // shorter plus this slack are a difference.
+    bool compare = false;
+    unsigned compare_slack_ms = 50;
 };
 inline constexpr double kMinClockSpeed = 0.01, kMaxClockSpeed = 1000;
 inline constexpr const char* kClockSpeedFix = "use a factor from 0.01 to 1000 (default 1: real time)";

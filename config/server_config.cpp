@@ -168,6 +168,12 @@ ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path
     }
     if (root.has("upstream_timeout_ms"))
         c.upstream_timeout_ms = static_cast<unsigned>(whole_setting(root, Section::Station, "upstream_timeout_ms"));
+    if (root.has("compare")) c.compare = root["compare"].boolean();
+    if (root.has("compare_slack_ms"))
+        c.compare_slack_ms = static_cast<unsigned>(whole_setting(root, Section::Station, "compare_slack_ms"));
+    if (c.compare && c.upstream.empty())
+        root["compare"].fail("\"compare\" without \"upstream\"", "differential mode compares this station with its upstream: "
+                                                                   "give \"upstream\": \"HOST:PORT\" too, or drop \"compare\"");
     if (root.has("device_sizes")) c.device_sizes = parse_device_sizes(root["device_sizes"]);
     if (root.has("devices")) c.devices = parse_initial_values(root["devices"]);
     if (root.has("log_level")) {

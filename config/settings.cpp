@@ -110,6 +110,20 @@ constexpr Setting kSettings[] = {
      .doc = "proxy mode: how long the upstream has to connect and answer; then the client gets CF71 and the "
             "connection is opened afresh for the next request",
      .flag_scale = 1000, .flag_fix = "use 0.001 to 600 seconds (default 3)"},
+    {.section = S::Station, .key = "compare", .flag = "compare", .type = T::Boolean, .default_text = "`false`",
+     .help = "differential mode (with --upstream): serve each request here too and report every difference between "
+             "this station's answer and the upstream's; clients get the upstream's (docs/twin.md)",
+     .doc = "differential mode (with `upstream`): each request is served from this station's own memory and profile "
+            "as well, and every difference from the upstream's answer is logged, listed at `GET /api/compare` and "
+            "counted in `slmp_compare_total`; the clients get the upstream's answer ([twin.md](twin.md#compare))"},
+    {.section = S::Station, .key = "compare_slack_ms", .flag = "compare-slack", .type = T::Integer,
+     .flag_arg = F::Real, .min = 0, .max = 600000, .default_text = "50",
+     .help = "differential mode: answer times are far apart (a \"time\" difference) when the longer is more than "
+             "twice the shorter plus this many seconds (default 0.05)",
+     .fix = "use 0 to 600000 ms (default 50)",
+     .doc = "differential mode: answer times are far apart — a `time` difference — when the longer is more than twice "
+            "the shorter plus this ([twin.md](twin.md#compare))",
+     .flag_scale = 1000, .flag_fix = "use 0 to 600 seconds (default 0.05)"},
     {.section = S::Station, .key = "device_sizes", .flag = "", .type = T::Object, .default_text = "the profile's",
      .help = "points per device area, overriding the profile (`X`, `Y`, `M`, `L`, `F`, `V`, `B`, `SB`, `S`, `SM`, "
              "`D`, `W`, `SW`, `SD`, `R`, `ZR`, `RD`, `Z`, `LZ`, `T`, `ST`, `C`, `LT`, `LST`, `LC`, and the CPU "

@@ -1,6 +1,7 @@
 #include "protocol/differential.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <functional>
 
 #include "devicemodel/hex.hpp"
@@ -539,15 +540,78 @@ std::string describe(const Observed& observed) {
     return "end code " + devicemodel::hex4(observed.end_code) + ", " + std::to_string(observed.bytes.size()) + " bytes";
 }
 
+std::string_view kind_name(DifferenceKind kind) {
+    switch (kind) {
+        case DifferenceKind::Same: return "same";
+        case DifferenceKind::Close: return "close";
+        case DifferenceKind::Silence: return "silence";
+        case DifferenceKind::EndCode: return "end_code";
+        case DifferenceKind::Bytes: return "bytes";
+        case DifferenceKind::Time: return "time";
+    }
+    return "same";
+}
+
+std::string_view kind_name(Observed::Kind kind) {
+    switch (kind) {
+        case Observed::Kind::Answer: return "answer";
+        case Observed::Kind::Silence: return "silence";
+        case Observed::Kind::Close: return "close";
+    }
+    return "answer";
+}
+
+bool times_far_apart(std::chrono::microseconds a, std::chrono::microseconds b, std::chrono::microseconds slack) {
+    const auto shorter = std::min(a, b), longer = std::max(a, b);
+    return longer > 2 * shorter + slack;
+}
+
+namespace {
+
+std::string milliseconds(std::chrono::microseconds time) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f ms", static_cast<double>(time.count()) / 1000.0);
+    return text;
+}
+
+}  // namespace
+
+Difference classify(const Observed& a, const Observed& b, std::optional<std::chrono::microseconds> slack) {
+    using Kind = Observed::Kind;
+    Difference d;
+    if (a.kind != b.kind) {
+        d.kind = a.kind == Kind::Close || b.kind == Kind::Close ? DifferenceKind::Close : DifferenceKind::Silence;
+        d.text = describe(a) + " vs " + describe(b);
+        return d;
+    }
+    if (a.kind != Kind::Answer) return d;
+    if (a.bytes != b.bytes) {
+        auto mismatch = std::mismatch(a.bytes.begin(), a.bytes.end(), b.bytes.begin(), b.bytes.end());
+        d.first_byte = static_cast<std::size_t>(mismatch.first - a.bytes.begin());
+        if (a.end_code != b.end_code) {
+            d.kind = DifferenceKind::EndCode;
+            d.text = describe(a) + " vs " + describe(b);
+        } else {
+            d.kind = DifferenceKind::Bytes;
+            d.text = "same end code " + devicemodel::hex4(a.end_code) + ", bytes differ from offset " +
+                     std::to_string(*d.first_byte) + " (" + std::to_string(a.bytes.size()) + " vs " +
+                     std::to_string(b.bytes.size()) + " bytes): " + devicemodel::bytes_to_hex(a.bytes) + " vs " +
+                     devicemodel::bytes_to_hex(b.bytes);
+        }
+        return d;
+    }
+    if (slack && a.time && b.time && times_far_apart(*a.time, *b.time, *slack)) {
+        d.kind = DifferenceKind::Time;
+        d.text = "the same answer, in " + milliseconds(*a.time) + " vs " + milliseconds(*b.time) +
+                 " (far apart: more than twice the shorter plus " + milliseconds(*slack) + ")";
+    }
+    return d;
+}
+
 std::optional<std::string> difference(const Observed& a, const Observed& b) {
-    if (a.kind != b.kind) return describe(a) + " vs " + describe(b);
-    if (a.kind != Observed::Kind::Answer || a.bytes == b.bytes) return std::nullopt;
-    if (a.end_code != b.end_code) return describe(a) + " vs " + describe(b);
-    auto mismatch = std::mismatch(a.bytes.begin(), a.bytes.end(), b.bytes.begin(), b.bytes.end());
-    return "same end code " + devicemodel::hex4(a.end_code) + ", bytes differ from offset " +
-           std::to_string(mismatch.first - a.bytes.begin()) + " (" + std::to_string(a.bytes.size()) + " vs " +
-           std::to_string(b.bytes.size()) + " bytes): " + devicemodel::bytes_to_hex(a.bytes) + " vs " +
-           devicemodel::bytes_to_hex(b.bytes);
+    auto d = classify(a, b);
+    if (d.same()) return std::nullopt;
+    return d.text;
 }
 
 }  // namespace slmp::protocol::differential

@@ -8,9 +8,11 @@
 // one" (slmp probe's served-or-refused test uses sample_request()).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "devicemodel/cpu_profile.hpp"
@@ -49,11 +51,52 @@ struct Observed {
     Kind kind = Kind::Answer;
     std::vector<std::uint8_t> bytes;   // the answer frame (Answer)
     std::uint16_t end_code = 0;        // the answer's end code (Answer)
+    // How long the answer took, where the caller measured it (slmp-sim
+    // --compare); nullopt: not compared.
+    std::optional<std::chrono::microseconds> time = std::nullopt;
 };
+
+// The kinds of difference, the same in every report (slmp-sim --compare's log,
+// GET /api/compare and its metric, slmp-replay, slmp diff; docs/twin.md,
+// "Compare"). The first that applies names it:
+//   close    one side closed the connection and the other did not;
+//   silence  one side answered and the other stayed silent;
+//   end_code both answered, with different end codes;
+//   bytes    both answered with the same end code, and the bytes differ;
+//   time     the same answer, at answer times far apart (times_far_apart).
+// Both silent, or both closed, is the same.
+enum class DifferenceKind : std::uint8_t { Same, Close, Silence, EndCode, Bytes, Time };
+inline constexpr DifferenceKind kDifferenceKinds[] = {DifferenceKind::Close, DifferenceKind::Silence,
+                                                      DifferenceKind::EndCode, DifferenceKind::Bytes,
+                                                      DifferenceKind::Time};
+// "same", "close", "silence", "end_code", "bytes", "time".
+std::string_view kind_name(DifferenceKind kind);
+// "answer", "silence", "close".
+std::string_view kind_name(Observed::Kind kind);
+
+struct Difference {
+    DifferenceKind kind = DifferenceKind::Same;
+    // end_code and bytes: the offset of the first byte that differs (a shorter
+    // answer that is the start of the longer one: the shorter one's length).
+    std::optional<std::size_t> first_byte;
+    std::string text;   // one line saying how (empty: the same)
+
+    bool same() const { return kind == DifferenceKind::Same; }
+};
+
+// Answer times far apart: the longer is more than twice the shorter plus
+// `slack`. Twice absorbs the spread of one server's own answers; the slack,
+// the network and the scheduling of a fast one (a twin that answers in 50 µs
+// and a PLC in 4 ms are not far apart with a few ms of slack).
+bool times_far_apart(std::chrono::microseconds a, std::chrono::microseconds b, std::chrono::microseconds slack);
+
+// How `b` differs from `a`. Times are compared only when both carry one and
+// `slack` is given (the answers being the same).
+Difference classify(const Observed& a, const Observed& b, std::optional<std::chrono::microseconds> slack = std::nullopt);
 
 std::string describe(const Observed& observed);
 // nullopt when both did the same (the same answer bytes, or both silence, or
-// both close); else a line saying how they differ.
+// both close); else a line saying how they differ (classify's text).
 std::optional<std::string> difference(const Observed& a, const Observed& b);
 
 }  // namespace slmp::protocol::differential

@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <vector>
@@ -125,6 +126,13 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
         config::parse_upstream(c.upstream, "--upstream");
     }
     if (vm.count("upstream-timeout")) c.upstream_timeout_ms = static_cast<unsigned>(vm["upstream-timeout"].as<double>() * 1000);
+    if (vm.count("compare")) {
+        if (c.upstream.empty())
+            throw ConfigError("--compare without --upstream: differential mode compares this station with its upstream; "
+                              "give --upstream HOST:PORT too");
+        c.compare = true;
+    }
+    if (vm.count("compare-slack")) c.compare_slack_ms = static_cast<unsigned>(std::lround(vm["compare-slack"].as<double>() * 1000));
     if (vm.count("max-request-bytes")) c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();
     if (vm.count("log-level")) {
         c.log_level = vm["log-level"].as<std::string>();

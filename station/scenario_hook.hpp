@@ -40,6 +40,9 @@ struct Handled {
     // Not served here either: proxy mode sends the frame of outcome.consumed
     // bytes to the station's upstream (Station::pass_on; docs/twin.md, "Proxy").
     bool forward = false;
+    // Proxy mode with --compare, timing mode "model": the time the model gave
+    // the request, which this station's own answer is compared at.
+    std::optional<std::chrono::microseconds> modelled;
 };
 
 class ScenarioHook : public ActivityObserver {

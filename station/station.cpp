@@ -14,6 +14,7 @@
 #include "protocol/ondemand.hpp"
 #include "scenarios/initial_state.hpp"
 #include "scenarios/loader.hpp"
+#include "station/comparison.hpp"
 #include "station/cpu_program.hpp"
 #include "station/drive_state.hpp"
 #include "station/inbox.hpp"
@@ -63,10 +64,14 @@ Station::Station(const station::Home& home, const config::ServerConfig& config)
     config::attach_drives(cpu_, config_);
     config::declare_labels(cpu_, config_.labels);
     cpu_.node().identity() = node_identity(config_, cpu_.profile());   // what node search reports (docs/nodes.md)
+    if (config_.compare)   // the port of the profile itself: engine_'s frames every frame for the upstream
+        twin_engine_ = std::make_unique<protocol::Engine>(cpu_, config::resolve_profile(config_).port,
+                                                          protocol::EngineOptions{config_.max_request_bytes});
     for (const auto& cpu : config_.cpus) {
         auto profile = config::resolve_profile(cpu);
         other_cpus_.push_back(std::make_unique<devicemodel::Cpu>(std::move(profile.cpu)));
         config::apply_initial_values(*other_cpus_.back(), cpu.devices);
+        if (twin_engine_) twin_engine_->add_cpu(cpu.number, *other_cpus_.back(), profile.port);
         engine_.add_cpu(cpu.number, *other_cpus_.back(), std::move(profile.port));
     }
     start_cpu_runtime(home);
@@ -77,8 +82,15 @@ Station::Station(const station::Home& home, const config::ServerConfig& config)
     if (!config_.upstream.empty()) {
         upstream_ = std::make_unique<Upstream>(home, config::parse_upstream(config_.upstream, "upstream"),
                                                std::chrono::milliseconds(config_.upstream_timeout_ms), *log_);
-        log_->info("proxy mode: every SLMP request goes to {} (timeout {} ms); the local devices serve none",
-                   upstream_->address().text(), config_.upstream_timeout_ms);
+        if (config_.compare) {
+            comparison_ = std::make_unique<Comparison>(std::chrono::milliseconds(config_.compare_slack_ms), *log_);
+            log_->info("differential mode: every SLMP request goes to {} (timeout {} ms) and is served by this station's "
+                       "{} too; clients get the upstream's answers, each difference is logged and listed at /api/compare",
+                       upstream_->address().text(), config_.upstream_timeout_ms, cpu_.profile().name);
+        } else {
+            log_->info("proxy mode: every SLMP request goes to {} (timeout {} ms); the local devices serve none",
+                       upstream_->address().text(), config_.upstream_timeout_ms);
+        }
     }
 }
 
@@ -159,7 +171,10 @@ Handled Station::handle(std::span<const std::uint8_t> input, protocol::DataCodeP
 }
 
 Handled Station::handle(Ticket& ticket, protocol::Session& session, const protocol::Peer& peer) {
-    if (auto forwarded = to_upstream(ticket.request)) return std::move(*forwarded);
+    if (auto forwarded = to_upstream(ticket.request)) {
+        if (ticket.service) forwarded->modelled = ticket.service->modelled;
+        return std::move(*forwarded);
+    }
     if (auto relayed = route(ticket.request, ticket.bytes, ticket.policy)) return std::move(*relayed);
     return serve(std::move(ticket.request), ticket.bytes, session, peer, ticket.service ? &*ticket.service : nullptr);
 }
@@ -213,11 +228,12 @@ std::optional<Handled> Station::to_upstream(const protocol::Request& request) co
 StrandTask<Handled> Station::pass_on(Handled pending, std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
                                      Relays& relays, protocol::Session& session, protocol::Peer peer) {
     if (pending.relay) co_return co_await relays.pass_on(std::move(*pending.relay), std::move(frame), policy, std::move(peer));
-    co_return co_await asio::co_spawn(home(), forward(std::move(frame), policy, session, std::move(peer)), use_strand);
+    co_return co_await asio::co_spawn(home(), forward(std::move(frame), policy, session, std::move(peer), pending.modelled),
+                                      use_strand);
 }
 
 StrandTask<Handled> Station::forward(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy, protocol::Session& session,
-                                     protocol::Peer peer) {
+                                     protocol::Peer peer, std::optional<std::chrono::microseconds> modelled) {
     catch_up();
     activity_.request_starting();
     const auto started = std::chrono::steady_clock::now();
@@ -229,6 +245,9 @@ StrandTask<Handled> Station::forward(std::vector<std::uint8_t> frame, protocol::
     auto& o = handled.outcome;
     if (plan.pass()) {
         auto answer = co_await upstream_->exchange(frame, request);
+        // Differential mode: the twin serves it once the upstream has (requests
+        // take turns there, so both see the clients' requests in one order).
+        if (comparison_) compare(frame, policy, request, answer, session, peer, modelled);
         o.action = Outcome::Action::Respond;
         o.consumed = request.size;
         o.command = request.command;
@@ -250,6 +269,70 @@ StrandTask<Handled> Station::forward(std::vector<std::uint8_t> frame, protocol::
                        std::chrono::steady_clock::now() - started, std::nullopt});
     touched();
     co_return handled;
+}
+
+// Differential mode (docs/twin.md, "Compare"): the upstream's answer is the
+// reference (the real PLC stays the truth for the client, who gets it), the
+// twin's is this station's own, and the report says how they differ.
+void Station::compare(std::span<const std::uint8_t> frame, protocol::DataCodePolicy policy, const protocol::Request& request,
+                      const UpstreamAnswer& answer, protocol::Session& session, const protocol::Peer& peer,
+                      std::optional<std::chrono::microseconds> modelled) {
+    using Observed = protocol::differential::Observed;
+    ComparedRequest compared;
+    compared.at = std::chrono::system_clock::now();
+    compared.connection = session.id;
+    compared.peer = peer;
+    compared.command = request.command;
+    compared.subcommand = request.subcommand;
+    compared.request.assign(frame.begin(), frame.begin() + static_cast<std::ptrdiff_t>(std::min(request.size, frame.size())));
+    auto& up = compared.upstream;
+    switch (answer.failed) {
+        case UpstreamAnswer::Failed::No:
+            up.bytes = answer.bytes;
+            up.end_code = static_cast<std::uint16_t>(answer_end_code(answer.bytes, request));
+            break;
+        case UpstreamAnswer::Failed::NotAnAnswer:   // compared as the bytes they are, with no end code to read
+            up.bytes = answer.bytes;
+            up.end_code = 0xFFFF;
+            break;
+        case UpstreamAnswer::Failed::Silent: up.kind = Observed::Kind::Silence; break;
+        case UpstreamAnswer::Failed::Unreachable:   // refused: as a port that closes
+        case UpstreamAnswer::Failed::Closed: up.kind = Observed::Kind::Close; break;
+    }
+    up.time = answer.took;
+    catch_up();   // the scans due while the upstream answered run first, as before any request here
+    compared.twin = serve_twin(compared.request, policy, request, session, peer, modelled);
+    comparison_->add(std::move(compared));
+}
+
+protocol::differential::Observed Station::serve_twin(std::span<const std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                                     const protocol::Request& request, protocol::Session& session,
+                                                     const protocol::Peer& peer,
+                                                     std::optional<std::chrono::microseconds> modelled) {
+    using Observed = protocol::differential::Observed;
+    session.file_owner = protocol::lock_owner(peer, session.id);
+    const auto started = std::chrono::steady_clock::now();
+    // Its own port decides what the frame is: a 1E frame on an iQ-R port is none.
+    auto outcome = twin_engine_->execute(twin_engine_->decode(frame, policy, session.own, session.routed), session);
+    const auto took = std::chrono::duration_cast<microseconds>(std::chrono::steady_clock::now() - started);
+    Observed twin;
+    switch (outcome.action) {
+        case Outcome::Action::Respond:
+            twin.bytes = std::move(outcome.response);
+            twin.end_code = static_cast<std::uint16_t>(answer_end_code(twin.bytes, request));
+            break;
+        case Outcome::Action::Close:
+        case Outcome::Action::Restart:   // a Remote RESET: its CPU restarted; the clients' connections are the upstream's
+            twin.kind = Observed::Kind::Close;
+            break;
+        case Outcome::Action::Silent:
+        case Outcome::Action::NeedMore:   // its port would wait for more bytes: silent
+            twin.kind = Observed::Kind::Silence;
+            break;
+    }
+    // model: the modelled time, which a client of this station alone would wait; else what serving took.
+    twin.time = modelled.value_or(took);
+    return twin;
 }
 
 StrandTask<Handled> Station::serve_routed(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,

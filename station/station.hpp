@@ -18,6 +18,7 @@
 
 #include "config/config.hpp"
 #include "devicemodel/cpu.hpp"
+#include "protocol/differential.hpp"
 #include "protocol/engine.hpp"
 #include "protocol/peer.hpp"
 #include "station/activity.hpp"
@@ -29,6 +30,7 @@ namespace slmp::frontends { class Unit; }
 
 namespace slmp::station {
 
+class Comparison;
 class CpuProgram;
 class LinkScan;
 class DriveState;
@@ -38,6 +40,7 @@ class ScanLoop;
 class ScenarioStation;
 struct StationSnapshot;
 class Upstream;
+struct UpstreamAnswer;
 
 // When a request held for the clock (the end_of_scan and model timing
 // modes, docs/timing.md) is served: the station decides (station/inbox.hpp
@@ -145,6 +148,9 @@ public:
                                 Relays& relays, protocol::Session& session, protocol::Peer peer);
     // Proxy mode (docs/twin.md, "Proxy"): null when the station serves from its own memory.
     Upstream* upstream() { return upstream_.get(); }
+    // Differential mode (--compare; docs/twin.md, "Compare"): its counts and
+    // last differences; null without it.
+    Comparison* comparison() { return comparison_.get(); }
     // Waits `timer` on this station's clock (a relay that got no answer).
     StrandTask<> wait_on_clock(std::chrono::milliseconds timer);
     // Whether a request is served as soon as it is whole (instant timing):
@@ -253,8 +259,21 @@ private:
     std::optional<Handled> to_upstream(const protocol::Request& request) const;
     // On this station's strand: the scenario hook around the upstream's
     // answer instead of the engine, then the log, recording and activity.
+    // With --compare the request is served here too (serve_twin) and the two
+    // answers compared; `modelled`: its time in timing mode "model".
     StrandTask<Handled> forward(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy, protocol::Session& session,
-                                protocol::Peer peer);
+                                protocol::Peer peer, std::optional<std::chrono::microseconds> modelled = std::nullopt);
+    // Differential mode: `frame` served from this station's own memory by its
+    // own profile's port (twin_engine_), as without an upstream, and what a
+    // client would have seen. `request`: the frame as forward() decoded it.
+    // Differential mode: the upstream's `answer` and the twin's to the same
+    // request, into the report (comparison_).
+    void compare(std::span<const std::uint8_t> frame, protocol::DataCodePolicy policy, const protocol::Request& request,
+                 const UpstreamAnswer& answer, protocol::Session& session, const protocol::Peer& peer,
+                 std::optional<std::chrono::microseconds> modelled);
+    protocol::differential::Observed serve_twin(std::span<const std::uint8_t> frame, protocol::DataCodePolicy policy,
+                                                const protocol::Request& request, protocol::Session& session,
+                                                const protocol::Peer& peer, std::optional<std::chrono::microseconds> modelled);
     // handle()'s body, for a request decoded from `input` (once).
     Handled serve(protocol::Request request, std::span<const std::uint8_t> input, protocol::Session& session,
                   const protocol::Peer& peer, const Service* service);
@@ -284,6 +303,10 @@ private:
     config::TimingMode timing_mode_ = config::TimingMode::Instant;
     std::unique_ptr<ResponseTiming> timing_;             // model mode only
     std::unique_ptr<Upstream> upstream_;                 // proxy mode only
+    // Differential mode only: the engine of the profile's own port (engine_
+    // frames every frame, for the upstream) over the same CPUs, and the report.
+    std::unique_ptr<protocol::Engine> twin_engine_;
+    std::unique_ptr<Comparison> comparison_;
 };
 
 }  // namespace slmp::station

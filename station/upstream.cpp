@@ -72,6 +72,7 @@ std::optional<std::size_t> whole_answer(std::span<const std::uint8_t> bytes, con
 protocol::EndCode answer_end_code(std::span<const std::uint8_t> answer, const protocol::Request& request) {
     if (request.header.kind == protocol::FrameKind::E1) {
         const bool ascii = request.header.codec == protocol::Codec::Ascii;
+        if (answer.size() < (ascii ? 4u : 2u)) return static_cast<protocol::EndCode>(0xFF);
         auto code = ascii ? devicemodel::parse_hex(answer.subspan(2, 2)) : std::optional<std::uint32_t>(answer[1]);
         return static_cast<protocol::EndCode>(code.value_or(0xFF));
     }
@@ -102,9 +103,14 @@ StrandTask<Upstream::Answer> Upstream::exchange(std::span<const std::uint8_t> fr
         co_await turn.async_wait(asio::redirect_error(use_strand, ec));
     }
     busy_ = true;
+    const auto turn_started = std::chrono::steady_clock::now();
     Answer answer;
-    if (stopped_) answer.failure = "the station is stopping";
+    if (stopped_) {
+        answer.failure = "the station is stopping";
+        answer.failed = Answer::Failed::Closed;
+    }
     else answer = co_await send_and_receive(frame, request);
+    answer.took = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - turn_started);
     ++turn_;   // a deadline that ran out just as the answer came belongs to no exchange now
     if (!waiting_.empty()) {
         waiting_.front()->cancel();
@@ -121,29 +127,30 @@ StrandTask<Upstream::Answer> Upstream::send_and_receive(std::span<const std::uin
     timed_out_ = false;
     arm(turn);
     Answer answer;
-    auto failed = [&](std::string why) {
+    auto failed = [&](Answer::Failed how, std::string why) {
         answer.failure = timed_out_ ? "no answer within " + std::to_string(timeout_.count()) + " ms" : std::move(why);
+        answer.failed = timed_out_ ? Answer::Failed::Silent : how;
         drop();   // a late answer must not be taken for the next request's
         return answer;
     };
     if (!socket_) {
         if (auto error = co_await connect(); !error.empty()) {
             deadline_.cancel();
-            co_return failed("cannot connect: " + error);
+            co_return failed(Answer::Failed::Unreachable, "cannot connect: " + error);
         }
     }
     boost::system::error_code ec;
     co_await asio::async_write(*socket_, asio::buffer(frame.data(), frame.size()), asio::redirect_error(use_strand, ec));
     if (ec) {
         deadline_.cancel();
-        co_return failed("sending failed: " + ec.message());
+        co_return failed(Answer::Failed::Closed, "sending failed: " + ec.message());
     }
     std::array<std::uint8_t, 4096> chunk;
     for (;;) {
         auto size = whole_answer(answer.bytes, request, monitor_words_);
         if (!size) {
             deadline_.cancel();
-            co_return failed("its answer is no SLMP response to the request (" +
+            co_return failed(Answer::Failed::NotAnAnswer, "its answer is no SLMP response to the request (" +
                              devicemodel::bytes_to_hex(std::span<const std::uint8_t>(answer.bytes).first(std::min<std::size_t>(answer.bytes.size(), 16))) + ")");
         }
         if (*size > 0) {
@@ -159,7 +166,7 @@ StrandTask<Upstream::Answer> Upstream::send_and_receive(std::span<const std::uin
         const auto n = co_await socket_->async_read_some(asio::buffer(chunk), asio::redirect_error(use_strand, ec));
         if (ec) {
             deadline_.cancel();
-            co_return failed(ec == asio::error::eof ? std::string("it closed the connection without answering")
+            co_return failed(Answer::Failed::Closed, ec == asio::error::eof ? std::string("it closed the connection without answering")
                                                      : "receiving failed: " + ec.message());
         }
         answer.bytes.insert(answer.bytes.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));

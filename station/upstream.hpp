@@ -24,6 +24,17 @@
 
 namespace slmp::station {
 
+// The upstream's answer to one request, or why there is none.
+struct UpstreamAnswer {
+    std::vector<std::uint8_t> bytes;   // the answer; NotAnAnswer: what came instead
+    std::string failure;               // empty: bytes is the answer
+    // What the upstream did instead of answering, as --compare tells it apart.
+    enum class Failed : std::uint8_t { No, Unreachable, Closed, Silent, NotAnAnswer };
+    Failed failed = Failed::No;
+    // From the request's turn on the connection to the answer (a connect included).
+    std::chrono::microseconds took{0};
+};
+
 class Upstream {
 public:
     Upstream(const Home& home, config::UpstreamAddress address, std::chrono::milliseconds timeout, spdlog::logger& log);
@@ -36,10 +47,7 @@ public:
     // why there is none (`failure`: unreachable, closed, silent past the
     // timeout, not an answer). Runs on the station's strand; requests wait
     // their turn.
-    struct Answer {
-        std::vector<std::uint8_t> bytes;
-        std::string failure;   // empty: bytes is the answer
-    };
+    using Answer = UpstreamAnswer;
     StrandTask<Answer> exchange(std::span<const std::uint8_t> frame, const protocol::Request& request);
 
     const config::UpstreamAddress& address() const { return address_; }

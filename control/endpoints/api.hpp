@@ -48,6 +48,7 @@ void add_file_endpoints(Router& router, Api& api);         // /api/drives[/{driv
 void add_scenario_endpoints(Router& router, Api& api);     // /api/scenarios[/{name}]
 void add_fault_endpoints(Router& router, Api& api);        // /api/faults[/{name}]
 void add_recording_endpoints(Router& router, Api& api);    // /api/recording
+void add_compare_endpoints(Router& router, Api& api);      // /api/compare (differential mode)
 void add_connection_endpoints(Router& router, Api& api);   // /api/connections[/{id}]
 void add_info_endpoint(Router& router, Api& api);          // /api/info
 void add_ondemand_endpoint(Router& router, Api& api);      // /api/ondemand

@@ -27,6 +27,7 @@ Router& StationSide::router() {
     add_scenario_endpoints(router, api);
     add_fault_endpoints(router, api);
     add_recording_endpoints(router, api);
+    add_compare_endpoints(router, api);
     add_connection_endpoints(router, api);
     add_info_endpoint(router, api);
     add_ondemand_endpoint(router, api);

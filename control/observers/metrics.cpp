@@ -1,4 +1,5 @@
 #include "control/observers/metrics.hpp"
+#include "station/comparison.hpp"
 #include "station/cpu_program.hpp"
 
 #include <cstdio>
@@ -230,6 +231,20 @@ std::string Metrics::render() const {
         out += "slmp_program_execution_seconds{kind=\"last\"} " + seconds(modelled.last) + "\n";
         out += "slmp_program_execution_seconds{kind=\"min\"} " + seconds(modelled.min) + "\n";
         out += "slmp_program_execution_seconds{kind=\"max\"} " + seconds(modelled.max) + "\n";
+    }
+
+    // Differential mode (docs/twin.md, "Compare"), read when scraped; absent without it.
+    if (const auto* comparison = station_.comparison()) {
+        header(out, "slmp_compare_total", "counter",
+               "Requests served both by the upstream and by this station (--compare): the same answer, or different.");
+        out += "slmp_compare_total{result=\"same\"} " + std::to_string(comparison->same()) + "\n";
+        out += "slmp_compare_total{result=\"different\"} " + std::to_string(comparison->different()) + "\n";
+        header(out, "slmp_compare_differences_total", "counter",
+               "Differences between the upstream's answer and this station's, by kind: close, silence, end_code, "
+               "bytes, time (docs/twin.md).");
+        for (auto kind : protocol::differential::kDifferenceKinds)
+            out += "slmp_compare_differences_total{kind=\"" + std::string(protocol::differential::kind_name(kind)) + "\"} " +
+                   std::to_string(comparison->count(kind)) + "\n";
     }
 
     // Read from the scenarios when scraped: a counter per running fault, gone

@@ -120,6 +120,15 @@ TEST_CASE("probe twin: a profile changed on purpose (a limit, a refused command)
     CHECK(all.find("0401/0000 D0 x960 (word limit)") != std::string::npos);
     CHECK(all.find("0619/0000 loopback 1 bytes") != std::string::npos);
     CHECK(all.find("D10240 x1 (first point past the end)") != std::string::npos);
+    // Each named by its kind, as slmp-sim --compare and slmp-replay name it: the original serves 960
+    // words, the changed profile refuses them.
+    bool word_limit = false;
+    for (const auto& d : result["differences"]) {
+        if (d["frame"] != "3E binary" || d["request"] != "0401/0000 D0 x960 (word limit)") continue;
+        CHECK(d["kind"] == "end_code");
+        word_limit = true;
+    }
+    CHECK(word_limit);
 }
 
 TEST_CASE("probe: read-only without --allow-writes, --out required, --record keeps every exchange",

@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Checks scenarios/schema.json against the files it describes.
 
-usage: check_scenarios.py SCHEMA EXAMPLES_DIR MISTAKES_JSON
+usage: check_scenarios.py SCHEMA EXAMPLES_DIR MISTAKES_JSON [SCENARIO.json ...]
 
-- every *.json in EXAMPLES_DIR must be valid;
+- every *.json in EXAMPLES_DIR must be valid, and every SCENARIO.json named
+  after the three (scenarios a tool writes: slmp-replay --to-scenario's
+  tests/data/hmi_session.scenario.json);
 - every mistake in MISTAKES_JSON marked "schema": true must be invalid (the
   others are caught by the C++ loader only; the unit tests check its messages).
 Needs Debian's python3-jsonschema (scripts/setup.sh installs it).
@@ -29,7 +31,7 @@ def main():
     examples = sorted(examples_dir.glob("*.json"))
     if len(examples) < 6:
         failures.append(f"expected at least 6 examples in {examples_dir}, found {len(examples)}")
-    for path in examples:
+    for path in examples + [pathlib.Path(p) for p in sys.argv[4:]]:
         errors = sorted(validator.iter_errors(json.loads(path.read_text())), key=lambda e: list(e.absolute_path))
         for e in errors:
             pointer = "/" + "/".join(str(p) for p in e.absolute_path)

@@ -46,7 +46,7 @@ TEST_CASE("differential: every command-table row is generated, as whole frames, 
     }
 }
 
-TEST_CASE("differential: the same answer is no difference; another end code, bytes, silence or close is", "[differential]") {
+TEST_CASE("differential: the same answer is no difference — another end code, bytes, silence or close is", "[differential]") {
     Observed ok{Observed::Kind::Answer, {0xD0, 0x00, 0x00, 0x00}, 0};
     Observed other_bytes{Observed::Kind::Answer, {0xD0, 0x00, 0x00, 0x01}, 0};
     Observed refused{Observed::Kind::Answer, {0xD0, 0x00, 0x59, 0xC0}, 0xC059};
@@ -60,4 +60,65 @@ TEST_CASE("differential: the same answer is no difference; another end code, byt
     CHECK(*difference(ok, other_bytes) == "same end code 0000, bytes differ from offset 3 (4 vs 4 bytes): D0000000 vs D0000001");
     CHECK(*difference(silence, closed) == "no answer vs connection closed");
     CHECK(*difference(ok, silence) == "end code 0000, 4 bytes vs no answer");
+}
+
+TEST_CASE("differential: classify names the kind — close before silence, end code before bytes, time last", "[differential][compare]") {
+    using protocol::differential::classify;
+    using protocol::differential::DifferenceKind;
+    using protocol::differential::kind_name;
+    using namespace std::chrono_literals;
+    Observed ok{Observed::Kind::Answer, {0xD0, 0x00, 0x00, 0x00}, 0};
+    Observed other_bytes{Observed::Kind::Answer, {0xD0, 0x00, 0x00, 0x01}, 0};
+    Observed longer{Observed::Kind::Answer, {0xD0, 0x00, 0x00, 0x00, 0x07}, 0};
+    Observed refused{Observed::Kind::Answer, {0xD0, 0x00, 0x59, 0xC0}, 0xC059};
+    Observed silence{Observed::Kind::Silence, {}, 0};
+    Observed closed{Observed::Kind::Close, {}, 0};
+
+    CHECK(classify(ok, ok).same());
+    CHECK(classify(silence, silence).same());
+    CHECK(classify(closed, closed).same());
+    CHECK(kind_name(classify(ok, ok).kind) == "same");
+
+    // One side closed: close, whatever the other did.
+    CHECK(classify(ok, closed).kind == DifferenceKind::Close);
+    CHECK(classify(closed, silence).kind == DifferenceKind::Close);
+    CHECK(classify(silence, closed).kind == DifferenceKind::Close);
+    // One side silent, the other answered: silence.
+    auto d = classify(silence, refused);
+    CHECK(d.kind == DifferenceKind::Silence);
+    CHECK(d.text == "no answer vs end code C059, 4 bytes");
+    CHECK_FALSE(d.first_byte);
+
+    // Both answered: another end code, then the first differing byte.
+    d = classify(ok, refused);
+    CHECK(d.kind == DifferenceKind::EndCode);
+    CHECK(kind_name(d.kind) == "end_code");
+    CHECK(d.first_byte == 2u);
+    d = classify(ok, other_bytes);
+    CHECK(d.kind == DifferenceKind::Bytes);
+    CHECK(d.first_byte == 3u);
+    d = classify(ok, longer);   // the shorter is the start of the longer: its length
+    CHECK(d.kind == DifferenceKind::Bytes);
+    CHECK(d.first_byte == 4u);
+    CHECK(d.text == "same end code 0000, bytes differ from offset 4 (4 vs 5 bytes): D0000000 vs D000000007");
+
+    // Times: only with a slack, only when both were measured, only for the same answer.
+    auto timed = [](Observed o, std::chrono::microseconds t) {
+        o.time = t;
+        return o;
+    };
+    CHECK(classify(timed(ok, 4ms), timed(ok, 120ms)).same());   // no slack given: not compared
+    CHECK(classify(timed(ok, 4ms), ok, 10ms).same());           // one side not measured
+    d = classify(timed(ok, 4ms), timed(ok, 120ms), 10ms);
+    CHECK(d.kind == DifferenceKind::Time);
+    CHECK(d.text == "the same answer, in 4.000 ms vs 120.000 ms (far apart: more than twice the shorter plus 10.000 ms)");
+    CHECK(classify(timed(ok, 4ms), timed(other_bytes, 120ms), 10ms).kind == DifferenceKind::Bytes);
+
+    // The rule: the longer more than twice the shorter plus the slack.
+    using protocol::differential::times_far_apart;
+    CHECK_FALSE(times_far_apart(0ms, 50ms, 50ms));
+    CHECK(times_far_apart(0ms, 51ms, 50ms));
+    CHECK_FALSE(times_far_apart(100ms, 250ms, 50ms));
+    CHECK(times_far_apart(251ms, 100ms, 50ms));
+    CHECK_FALSE(times_far_apart(3ms, 3ms, 0ms));
 }

@@ -60,7 +60,8 @@ json sample(const Setting& row) {
         {"password_lockout", {{"attempts", 3}}}, {"latch", {{"D", {0, 9}}}}, {"timers", json::array()},
         {"counters", json::array()}, {"program", {{"file", "line1.csv"}}}, {"error", {{"code", "1900"}}},
         {"file", "line1.csv"}, {"comments", "comments.csv"}, {"timer_limit", json::object()}, {"seed", 7},
-        {"wdt_ms", 200}, {"shard_host", "plant-{shard}.plant"}, {"upstream", "192.168.3.39:5000"}};
+        {"wdt_ms", 200}, {"shard_host", "plant-{shard}.plant"}, {"upstream", "192.168.3.39:5000"},
+        {"compare", false}};   // true needs "upstream" beside it (checked in its own test)
     if (auto it = samples.find(std::string(row.key)); it != samples.end()) return it->second;
     switch (row.type) {
         case SettingType::Integer: return static_cast<std::uint64_t>(row.max);
@@ -228,7 +229,8 @@ TEST_CASE("every row's flag is accepted by the command line", "[settings]") {
         {"labels", {(dir / "labels.json").string()}}, {"drive", {"4=" + dir.string()}},
         {"network-no", {"1", "--station-no", "1"}}, {"station-no", {"1", "--network-no", "1"}},
         {"profile", {"R04CPU"}}, {"switch", {"STOP"}}, {"clock", {"frozen"}},
-        {"shard", {"0/1", "--config", (dir / "plant.json").string()}}, {"upstream", {"192.168.3.39:5000"}}};
+        {"shard", {"0/1", "--config", (dir / "plant.json").string()}}, {"upstream", {"192.168.3.39:5000"}},
+        {"compare", {"--upstream", "192.168.3.39:5000"}}};
     for (const auto& row : config::all_settings()) {
         if (row.flag.empty()) continue;
         const std::string flag(row.long_flag());

@@ -1,9 +1,15 @@
 // slmp-replay: sends a recorded session (slmp-sim --record FILE) to any SLMP
 // server — slmp-sim, another simulator, a real PLC — and reports where the
-// answers differ from the recorded ones. One connection per recorded
-// connection, requests in the recorded order, one answer awaited per request.
+// answers differ from the recorded ones, in the kinds slmp-sim --compare
+// reports (protocol/differential.hpp: close, silence, end_code, bytes). One
+// connection per recorded connection, requests in the recorded order, one
+// answer awaited per request.
 // Exit: 0 every answer identical, 1 differences, 2 bad options or no server.
-// Reference: docs/scenarios.md "Record & replay".
+// --to-scenario: no server; the recording's reads become a scenario (to_scenario.hpp).
+// Reference: docs/scenarios.md "Record & replay", docs/twin.md.
+#include <array>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -12,8 +18,13 @@
 
 #include <boost/program_options.hpp>
 
+#include "config/config.hpp"
+#include "config/config_error.hpp"
 #include "protocol/client.hpp"
+#include "protocol/differential.hpp"
+#include "scenarios/difference_json.hpp"
 #include "scenarios/recording.hpp"
+#include "tools/replay/to_scenario.hpp"
 #include "tools/replay/wire.hpp"
 
 namespace po = boost::program_options;
@@ -29,23 +40,29 @@ struct Options {
     std::chrono::milliseconds timeout{2000}, silence{200};
     bool pace = false;
     std::size_t max_shown = 20;
+    bool json = false;                  // the report as one JSON document on stdout
+    bool to_scenario = false;           // no replay: the recording's reads as a scenario
+    std::string out;                    // --to-scenario's file (empty: stdout)
+    std::string profile;                // --to-scenario's decoding profile (empty: the recording's)
 };
+
+namespace differential = slmp::protocol::differential;
+using Observed = differential::Observed;
 
 std::string hex(const Bytes& b) { return slmp::scenarios::to_hex(b); }
 
-// What differs, in a client's words: the end code, or the first differing byte.
-std::string describe(const Bytes& want, const Bytes& got) {
-    auto a = slmp::protocol::client::parse_response(want), b = slmp::protocol::client::parse_response(got);
-    char text[64];
-    if (a && b && a->end_code != b->end_code) {
-        std::snprintf(text, sizeof text, "end code %04X recorded, %04X now", a->end_code, b->end_code);
-        return text;
+// A recorded or a replayed answer as the comparison sees it. A recording
+// tells no silence from a close ("response": null): silence.
+Observed observed(const std::optional<Bytes>& answer, const std::string& why = "timeout") {
+    Observed o;
+    if (!answer) {
+        o.kind = why == "timeout" ? Observed::Kind::Silence : Observed::Kind::Close;
+        return o;
     }
-    std::size_t i = 0;
-    while (i < want.size() && i < got.size() && want[i] == got[i]) ++i;
-    if (i == want.size() || i == got.size())
-        return "length " + std::to_string(want.size()) + " recorded, " + std::to_string(got.size()) + " now";
-    return "first difference at byte " + std::to_string(i);
+    o.bytes = *answer;
+    auto parsed = slmp::protocol::client::parse_response(*answer);
+    o.end_code = parsed ? parsed->end_code : 0xFFFF;   // no frame to read an end code from
+    return o;
 }
 
 Options parse(int argc, char** argv) {
@@ -58,7 +75,12 @@ Options parse(int argc, char** argv) {
         ("timeout-ms", po::value<unsigned>(), "longest wait for each answer (default 2000)")
         ("silence-ms", po::value<unsigned>(), "how long to listen where the recording has no answer (default 200)")
         ("pace", "keep the recorded time between requests (default: as fast as answers come)")
-        ("max-shown", po::value<std::size_t>(), "differences printed in full (default 20)");
+        ("max-shown", po::value<std::size_t>(), "differences printed in full (default 20)")
+        ("json", "the report as one JSON document on stdout (every difference, as GET /api/compare lists them)")
+        ("to-scenario", "send nothing: turn what the recording's clients read into a scenario timeline (docs/twin.md)")
+        ("out", po::value<std::string>(), "--to-scenario: write the scenario to this file (default: stdout)")
+        ("profile", po::value<std::string>(), "--to-scenario: the profile that decodes the requests and names the devices "
+                                              "(default: the recording's, if built in; else R08CPU)");
     po::options_description hidden;
     hidden.add_options()("recording", po::value<std::string>());
     po::positional_options_description positional;
@@ -72,10 +94,15 @@ Options parse(int argc, char** argv) {
     if (vm.count("help")) {
         std::cout << "slmp-replay — send a recorded SLMP session to a server and report differing answers\n\n"
                   << "Usage: slmp-replay RECORDING.jsonl [options]\n\n"
-                  << "RECORDING.jsonl is a recording made with slmp-sim --record FILE.\n\n" << named
+                  << "       slmp-replay --to-scenario RECORDING.jsonl [--out SCENARIO.json] [--profile NAME]\n\n"
+                  << "RECORDING.jsonl is a recording made with slmp-sim --record FILE.\n"
+                  << "Differences are named by kind: close, silence, end_code, bytes (as slmp-sim --compare names them).\n\n"
+                  << named
                   << "\nExit status: 0 every answer identical, 1 some answers differ or are missing,\n"
                      "2 bad options, an unreadable recording or no server.\n"
-                     "Reference: docs/scenarios.md \"Record & replay\".\n";
+                     "--to-scenario: 0 the scenario written, 2 bad options, an unreadable recording\n"
+                     "or a file it cannot write.\n"
+                     "Reference: docs/scenarios.md \"Record & replay\", docs/twin.md.\n";
         std::exit(0);
     }
     Options o;
@@ -92,7 +119,47 @@ Options parse(int argc, char** argv) {
     if (vm.count("silence-ms")) o.silence = std::chrono::milliseconds(vm["silence-ms"].as<unsigned>());
     o.pace = vm.count("pace") > 0;
     if (vm.count("max-shown")) o.max_shown = vm["max-shown"].as<std::size_t>();
+    o.json = vm.count("json") > 0;
+    o.to_scenario = vm.count("to-scenario") > 0;
+    if (vm.count("out")) o.out = vm["out"].as<std::string>();
+    if (vm.count("profile")) o.profile = vm["profile"].as<std::string>();
+    if (!o.to_scenario && (vm.count("out") || vm.count("profile")))
+        throw std::runtime_error("--out and --profile go with --to-scenario");
     return o;
+}
+
+// --to-scenario: the recording's reads as a scenario (to_scenario.hpp); the
+// summary on stderr, so the scenario alone can go to stdout.
+int write_scenario(const Options& o, const slmp::scenarios::Recording& recording) {
+    slmp::config::Profile profile;
+    const std::string wanted = !o.profile.empty() ? o.profile : !recording.profile.empty() ? recording.profile : "R08CPU";
+    try {
+        profile = slmp::config::load_profile(wanted);
+    } catch (const slmp::config::ConfigError& e) {
+        if (!o.profile.empty()) {
+            std::cerr << "slmp-replay: error: --profile " << o.profile << ": " << e.what() << "\n";
+            return 2;
+        }
+        std::cerr << "slmp-replay: the recording's profile '" << wanted
+                  << "' is not a built-in one; the requests are decoded as R08CPU's (--profile FILE names yours)\n";
+        profile = slmp::config::load_profile("R08CPU");
+    }
+    auto result = slmp::replay::to_scenario(recording, profile, std::filesystem::path(o.file).stem().string());
+    const auto text = result.scenario.dump(2) + "\n";
+    if (o.out.empty()) {
+        std::cout << text;
+    } else {
+        std::ofstream file(o.out, std::ios::binary | std::ios::trunc);
+        file << text;
+        if (!file) {
+            std::cerr << "slmp-replay: error: cannot write " << o.out << "\n";
+            return 2;
+        }
+    }
+    std::cerr << "slmp-replay: " << result.reads << " read(s) of " << result.devices << " device(s): "
+              << result.steps << " timeline step(s)" << (o.out.empty() ? std::string() : " in " + o.out) << "\n";
+    for (const auto& [why, count] : result.skipped) std::cerr << "  " << count << " read(s) not used: " << why << "\n";
+    return 0;
 }
 
 }  // namespace
@@ -107,8 +174,11 @@ int main(int argc, char** argv) {
         std::cerr << "slmp-replay: error: " << e.what() << "\n";
         return 2;
     }
+    if (o.to_scenario) return write_scenario(o, recording);
     std::map<std::uint64_t, std::unique_ptr<Wire>> wires;   // recorded connection -> our connection
     std::size_t same = 0, different = 0, shown = 0;
+    std::array<std::size_t, 6> kinds{};   // by differential::DifferenceKind
+    auto differences = nlohmann::json::array();
     double previous_ms = recording.exchanges.empty() ? 0 : recording.exchanges.front().t_ms;
     for (std::size_t i = 0; i < recording.exchanges.size(); ++i) {
         const auto& e = recording.exchanges[i];
@@ -132,19 +202,42 @@ int main(int argc, char** argv) {
                       << " (port unreachable)\n";
             return 2;
         }
-        bool match = got ? (e.response && *got == *e.response) : !e.response;
-        if (match) {
+        const auto recorded = observed(e.response), now = observed(got, why);
+        const auto d = differential::classify(recorded, now);
+        if (d.same()) {
             ++same;
             continue;
         }
         ++different;
+        ++kinds[static_cast<std::size_t>(d.kind)];
         if (!got) wire.reset();   // closed or silent: the next request of this connection starts afresh
+        if (o.json) {
+            auto entry = slmp::scenarios::difference_json(d, e.request, "recorded", recorded, "now", now);
+            entry["exchange"] = i + 1;
+            entry["connection"] = e.connection;
+            entry["t_ms"] = e.t_ms;
+            if (!got) entry["why"] = why;
+            differences.push_back(std::move(entry));
+            continue;
+        }
         if (shown++ >= o.max_shown) continue;
         std::cout << "#" << i + 1 << " (connection " << e.connection << ", " << e.t_ms << " ms) request " << hex(e.request) << "\n"
                   << "  recorded: " << (e.response ? hex(*e.response) : std::string("(no answer)")) << "\n"
-                  << "  now:      " << (got ? hex(*got) : "(" + why + ")") << "\n";
-        if (got && e.response) std::cout << "  " << describe(*e.response, *got) << "\n";
+                  << "  now:      " << (got ? hex(*got) : "(" + why + ")") << "\n"
+                  << "  " << differential::kind_name(d.kind) << ": recorded vs now: " << d.text << "\n";
     }
-    std::cout << recording.exchanges.size() << " exchange(s): " << same << " identical, " << different << " different\n";
+    auto count = [&](differential::DifferenceKind kind) { return kinds[static_cast<std::size_t>(kind)]; };
+    if (o.json) {
+        std::cout << nlohmann::json{{"exchanges", recording.exchanges.size()}, {"same", same}, {"different", different},
+                                    {"kinds", slmp::scenarios::kinds_json(count)}, {"differences", std::move(differences)}}
+                         .dump(2)
+                  << "\n";
+        return different ? 1 : 0;
+    }
+    std::cout << recording.exchanges.size() << " exchange(s): " << same << " identical, " << different << " different";
+    std::string by_kind;
+    for (auto kind : differential::kDifferenceKinds)
+        if (count(kind)) by_kind += (by_kind.empty() ? "" : ", ") + std::string(differential::kind_name(kind)) + " " + std::to_string(count(kind));
+    std::cout << (by_kind.empty() ? "" : " (" + by_kind + ")") << "\n";
     return different ? 1 : 0;
 }

@@ -49,7 +49,7 @@ void run_diff(Invocation& in) {
     if (!o.record.empty()) recorder = std::make_unique<WireRecorder>(o.record, "diff against " + o.against);
 
     Table table;
-    table.headers = {"frame", "request", "difference"};
+    table.headers = {"frame", "request", "kind", "difference"};
     Json differences = Json::array();
     std::size_t sent = 0, skipped = 0;
     for (auto kind : {FrameKind::E3, FrameKind::E4}) {
@@ -66,9 +66,12 @@ void run_diff(Invocation& in) {
                 auto first = a.exchange(samples[i].bytes);
                 auto second = b.exchange(samples[i].bytes);
                 ++sent;
-                if (auto d = differential::difference(first, second)) {
-                    table.rows.push_back({variant, samples[i].label, *d});
-                    differences.push_back({{"frame", variant}, {"request", samples[i].label}, {"difference", *d}});
+                // The kinds slmp-sim --compare and slmp-replay name too (docs/twin.md, "Compare").
+                if (auto d = differential::classify(first, second); !d.same()) {
+                    const std::string kind(differential::kind_name(d.kind));
+                    table.rows.push_back({variant, samples[i].label, kind, d.text});
+                    differences.push_back({{"frame", variant}, {"request", samples[i].label}, {"kind", kind},
+                                           {"difference", d.text}});
                 }
                 if (i == 0 && first.kind == differential::Observed::Kind::Silence &&
                     second.kind == differential::Observed::Kind::Silence) {
