@@ -161,7 +161,7 @@ TEST_CASE("snapshots: change everything, restore, every value back over SLMP and
           "snapshot name 'a b': use 1-64 letters, digits, '-', '_' or '.'");
 }
 
-TEST_CASE("reset: back to the configuration's initial state; drop_connections closes the clients", "[ci][snapshot]") {
+TEST_CASE("reset: back to the configuration's initial state, drop_connections closes the clients", "[ci][snapshot]") {
     SimOptions options;
     options.config_json = kConfig;
     SimProcess sim(options);
@@ -213,7 +213,7 @@ TEST_CASE("snapshot file: saved with the API, started from with --snapshot", "[c
     CHECK(bad.err.find("not a slmp-sim station snapshot (bad magic)") != std::string::npos);
 }
 
-TEST_CASE("frozen clock: timers do not move; 20 steps of 100 ms set a K20 timer's contact at the 20th", "[ci][clock]") {
+TEST_CASE("frozen clock: timers do not move, 20 steps of 100 ms set a K20 timer's contact at the 20th", "[ci][clock]") {
     SimOptions options;
     options.config_json = kConfig;
     options.args = {"--clock", "frozen"};
@@ -317,7 +317,7 @@ TEST_CASE("wait: answers when an SLMP write lands, 408 with the last value at th
           "timeout_ms, as");
 }
 
-TEST_CASE("wait on a label: in the label area and on a device, woken by 141B; FLOAT refused", "[ci][wait][labels]") {
+TEST_CASE("wait on a label: in the label area and on a device, woken by 141B, FLOAT refused", "[ci][wait][labels]") {
     SimOptions options;
     options.config_json = R"({"labels": [{"name": "Count", "type": "Word [Signed]"},
                                          {"name": "LabelW", "type": "Word [Signed]", "device": "D9000"},

@@ -296,7 +296,7 @@ TEST_CASE("Slowloris: 300 half-frame connections do not keep a well-behaved clie
     CHECK(serves(*client, "SERVED"));
 }
 
-TEST_CASE("Per-address cap: a client address at its limit has new connections closed; others are served",
+TEST_CASE("Per-address cap: a client address at its limit has new connections closed, others are served",
           "[policy][tcp][per-address]") {
     SimProcess sim(with_args({"--max-connections-per-address", "2"}));
     auto a1 = TcpClient::open(sim.tcp_port());

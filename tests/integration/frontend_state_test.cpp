@@ -68,7 +68,7 @@ json get(const SimProcess& sim, const std::string& target) { return http_get(sim
 
 }  // namespace
 
-TEST_CASE("HTTP host-link names: CIO, HR, DM, VR both ways; bad names refused naming the form", "[hostlink][frontend][http]") {
+TEST_CASE("HTTP host-link names: CIO, HR, DM, VR both ways, bad names refused naming the form", "[hostlink][frontend][http]") {
     SimProcess sim(station(kLadderMotion));
     auto client = TcpClient::open(hostlink_port(sim));
 

@@ -43,7 +43,7 @@ void expect_error(const HttpResponse& r, int status, const std::string& message)
 
 }  // namespace
 
-TEST_CASE("HTTP buffer: a module's buffer memory is the one 0601 and U3\\G reach", "[http][buffer]") {
+TEST_CASE("HTTP buffer: a module's buffer memory is the one 0601 and U3¥G reach", "[http][buffer]") {
     SimProcess sim(plant());
     TcpLink link(sim.tcp_port());
     auto r = http_put(sim.http_port(), "/api/buffer/U3/G100", R"({"values": [4660, 65535]})");

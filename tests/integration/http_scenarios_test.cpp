@@ -160,7 +160,7 @@ TEST_CASE("HTTP scenarios: a bad scenario gets the --scenario loader's message",
     CHECK(http_get(port, "/api/scenarios").json()["scenarios"].empty());
 }
 
-TEST_CASE("HTTP recording: start, see, stop; the file holds the exchanges", "[http][recording]") {
+TEST_CASE("HTTP recording: start, see, stop, the file holds the exchanges", "[http][recording]") {
     SimProcess sim;
     auto port = sim.http_port();
     TempDir dir;

@@ -35,7 +35,7 @@ json device_json(std::uint16_t http_port, const std::string& target) {
 
 }  // namespace
 
-TEST_CASE("FX5U: X7 and X10 are adjacent over SLMP, HTTP and the CLI; X8 is refused", "[octal][http][cli]") {
+TEST_CASE("FX5U: X7 and X10 are adjacent over SLMP, HTTP and the CLI, X8 is refused", "[octal][http][cli]") {
     SimProcess sim(with_args({"--profile", "FX5U-32MR"}));
     TcpLink link(sim.tcp_port());
     const auto api_port = sim.http_port();

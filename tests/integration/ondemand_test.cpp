@@ -107,7 +107,7 @@ TEST_CASE("ondemand over UDP: the peers that have sent a request get a datagram"
     CHECK(show(*push) == show(kPush3EBinary));
 }
 
-TEST_CASE("ondemand: a scenario step pushes at its time; the recording and the event stream show it", "[ondemand]") {
+TEST_CASE("ondemand: a scenario step pushes at its time, the recording and the event stream show it", "[ondemand]") {
     TempDir dir;
     auto scenario = dir.write("push.json", R"({
         "name": "push",

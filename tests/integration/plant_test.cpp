@@ -298,7 +298,7 @@ TEST_CASE("plant: 200 stations from a template, each its own CPU over SLMP, HTTP
               std::string::npos);
 }
 
-TEST_CASE("plant: a partitioned station answers nothing until healed; the others answer", "[plant]") {
+TEST_CASE("plant: a partitioned station answers nothing until healed, the others answer", "[plant]") {
     SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0},
         "stations": [{"template": {}, "count": 2, "name": "press-{i}", "tcp_port": 0}]})",
                                  {"--threads", "2"}));
@@ -373,7 +373,7 @@ TEST_CASE("plant: clients of one station on several threads see every request at
     CHECK(last["values"] == nlohmann::json(std::vector<int>(kClients, kRounds)));
 }
 
-TEST_CASE("plant: scenario files name their stations; one list places each where it belongs", "[plant][scenario]") {
+TEST_CASE("plant: scenario files name their stations, one list places each where it belongs", "[plant][scenario]") {
     TempDir dir;
     auto presses = dir.write("presses.json", R"({"name": "presses", "stations": "press-*", "initial": {"devices": {"D0": 7}}})");
     auto oven = dir.write("oven.json", R"({"name": "oven", "stations": ["oven-1"], "initial": {"devices": {"D0": 9}}})");

@@ -528,7 +528,7 @@ TEST_CASE("program API: read back both formats, replace in STOP only, unload, lo
     CHECK(rig.program()["file"] == "example_8_1.il");
 }
 
-TEST_CASE("program: a snapshot holds the program's timers and edges; restore goes on from there", "[program][snapshot]") {
+TEST_CASE("program: a snapshot holds the program's timers and edges, restore goes on from there", "[program][snapshot]") {
     ProgramRig rig(forms_of("8_2").front());
     const auto port = rig.http_port();
     rig.set("X0", true);

@@ -229,7 +229,7 @@ TEST_CASE("proxy: a plant station with \"upstream\"", "[proxy][plant]") {
     CHECK(checked.err.find("'plc-without-port' is not HOST:PORT") != std::string::npos);
 }
 
-TEST_CASE("proxy: in each timing mode B holds a request as its clock says, then it goes on; frames of one write in order", "[proxy][timing]") {
+TEST_CASE("proxy: in each timing mode B holds a request as its clock says, then it goes on, frames of one write in order", "[proxy][timing]") {
     SimProcess plc(with_args({"--profile", kPlc, "--no-http"}));
     auto direct = TcpClient::open(plc.tcp_port());
     for (const char* mode : {"instant", "end_of_scan", "model"}) {

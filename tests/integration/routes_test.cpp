@@ -282,7 +282,7 @@ TEST_CASE("routes: unreachable network or station, another CPU number, a built-i
           show(hex("D0 00 01 03 FF 03 00 0B 00 01 4A 01 03 FF 03 00 01 04 00 00")));
 }
 
-TEST_CASE("routes: at most 7 relay stations; the 8th answers 4A03", "[route][plant]") {
+TEST_CASE("routes: at most 7 relay stations, the 8th answers 4A03", "[route][plant]") {
     // gw on network 1; hop-k on networks k and k+1 (k = 1..8); end-7 on
     // network 8 (7 relay stations away), end-8 on network 9 (8 away).
     std::string stations = R"({"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "networks": [{"number": 1, "station": 1}]})";

@@ -92,7 +92,7 @@ TEST_CASE("slmp nodes and slmp status against an R08CPU: C059, exit 1", "[cli][n
     }
 }
 
-TEST_CASE("a plant: each node station answers node search on its own UDP port; a CPU station refuses", "[cli][node][plant]") {
+TEST_CASE("a plant: each node station answers node search on its own UDP port, a CPU station refuses", "[cli][node][plant]") {
     TempDir dir;
     auto profile = dir.write("node-profile.json", R"({"name": "R08CPU-NODE", "extends": "R08CPU", "node_commands": true, "description": "an SLMP-compatible device"})");
     SimOptions options;

@@ -136,7 +136,7 @@ TEST_CASE("model, frozen clock: the answer leaves once Ke + Kdt x words of CPU t
     }
 }
 
-TEST_CASE("model: pipelined requests are answered in order, each at its own time; an earlier answer does not wait for a later one", "[timing]") {
+TEST_CASE("model: pipelined requests are answered in order, each at its own time, an earlier answer does not wait for a later one", "[timing]") {
     auto sim = frozen_sim(R"({"mode": "model", "ke_ms": 10, "kdt_ms": 1, "scan_wait": false})");
     const auto port = sim.http_port();
     REQUIRE(http_put(port, "/api/devices/D0", R"({"values": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]})").status == 200);

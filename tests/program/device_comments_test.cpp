@@ -26,7 +26,7 @@ TEST_CASE("GX Works2's UTF-16LE comment file: title row, column names, one devic
           Lines{"X0A1=STOP PB L0", "Y0=モーター 1 \"運転\"", "D0.F=" + std::string(40, 'W')});
 }
 
-TEST_CASE("GX Converter's device,label,comment CSV, UTF-8: the comment, else the label; neither: omitted") {
+TEST_CASE("GX Converter's device,label,comment CSV, UTF-8: the comment, else the label, neither: omitted") {
     auto file = "Device,Label,Comment\nX0,START,Start button\nX1,STOP,\nY0,,\"Lamp, red\"\nU3E0\\G10,,Buffer\nM5,,\n";
     CHECK(flat(read_comments(file, "c.csv")) == Lines{"X0=Start button", "X1=STOP", "Y0=Lamp, red", "U3E0\\G10=Buffer"});
     CHECK(flat(read_comments("\xEF\xBB\xBF" "Device,Comment\r\nX0,Start\r\n", "c.csv")) == Lines{"X0=Start"});

@@ -24,7 +24,7 @@ program::ProgramOptions continuing() {
 }
 }  // namespace
 
-TEST_CASE("§5.4 16-bit arithmetic wraps; / truncates toward 0, remainder takes the dividend's sign",
+TEST_CASE("§5.4 16-bit arithmetic wraps, / truncates toward 0, remainder takes the dividend's sign",
           "[program][engine][arith]") {
     Rig rig(dotted("LD SM400 · + K32767 K1 D0 · - K-32768 K1 D1 · MOV K5 D2 · + K3 D2 · - K10 D2 · / K36 K-5 D10 · "
                    "/ K-36 K-5 D12 · / K-32768 K-1 D14 · * K-300 K400 D16 · MOV K32767 D20 · INC D20 · MOV K-32768 D21 · "

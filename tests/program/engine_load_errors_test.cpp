@@ -187,7 +187,7 @@ TEST_CASE("load warnings: double coil of a bit, MC without MCR", "[program][engi
     CHECK(warnings[1] == "test.il: line 6: MC N0 has no MCR; it stays in force to END");
 }
 
-TEST_CASE("a bit of a word device takes its hex digit in either case; anything else is refused", "[program][engine][load]") {
+TEST_CASE("a bit of a word device takes its hex digit in either case, anything else is refused", "[program][engine][load]") {
     std::string error;
     auto lower = slmp::program::detail::parse_operand("D0.a", slmp::devicemodel::Numbering{}, error);
     REQUIRE(lower);

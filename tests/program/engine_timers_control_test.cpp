@@ -22,7 +22,7 @@ TEST_CASE("OUTH times in 10 ms, OUT in 100 ms (time bases from ProgramOptions)",
     CHECK(fast.get("TS2") == 1);
 }
 
-TEST_CASE("retentive ST keeps its value while the coil is OFF; RST clears it", "[program][engine][timers]") {
+TEST_CASE("retentive ST keeps its value while the coil is OFF, RST clears it", "[program][engine][timers]") {
     Rig rig(dotted("LD X0 · OUT ST0 K10 · LD X1 · RST ST0 · END"));
     rig.set("X0", 1);
     rig.scan(51);
@@ -40,7 +40,7 @@ TEST_CASE("retentive ST keeps its value while the coil is OFF; RST clears it", "
     CHECK(rig.get("STS0") == 0);
 }
 
-TEST_CASE("LT counts in µs (iQ-R), preset from a word pair; preset 0 is ON at once", "[program][engine][timers]") {
+TEST_CASE("LT counts in µs (iQ-R), preset from a word pair, preset 0 is ON at once", "[program][engine][timers]") {
     Rig rig(dotted("LD X0 · OUT LT0 D0 · LD X0 · OUT T3 K0 · END"));
     rig.set("D0", 25000);   // 25 ms
     rig.set("X0", 1);
@@ -54,7 +54,7 @@ TEST_CASE("LT counts in µs (iQ-R), preset from a word pair; preset 0 is ON at o
     CHECK(rig.get("LTS0") == 1);
 }
 
-TEST_CASE("raising the preset after time-up keeps the contact ON; negative preset is a range error",
+TEST_CASE("raising the preset after time-up keeps the contact ON, negative preset is a range error",
           "[program][engine][timers]") {
     Rig rig(dotted("LD X0 · OUT T0 D0 · END"));
     rig.set("D0", 1);
@@ -88,7 +88,7 @@ TEST_CASE("RST T with the coil still ON restarts timing", "[program][engine][tim
     CHECK(rig.get("TS0") == 1);
 }
 
-TEST_CASE("LC is a 32-bit counter; a reset counter with its coil ON waits for OFF-ON", "[program][engine][timers]") {
+TEST_CASE("LC is a 32-bit counter, a reset counter with its coil ON waits for OFF-ON", "[program][engine][timers]") {
     Rig rig(dotted("LD X0 · OUT LC0 K100000 · LD X0 · OUT C1 K5 · LD X1 · RST C1 · END"));
     rig.set("LCN0", 99999);
     rig.set("X0", 1);
@@ -123,7 +123,7 @@ TEST_CASE("edge memory belongs to the step: two LDP of one device both see the e
     CHECK(rig.get("D5") == 4);   // ON in every scan but the one of the rising edge
 }
 
-TEST_CASE("a step skipped by CJ keeps its edge bit; PLS output stays ON while skipped", "[program][engine][edges]") {
+TEST_CASE("a step skipped by CJ keeps its edge bit, PLS output stays ON while skipped", "[program][engine][edges]") {
     Rig rig(dotted("LD X1 · CJ P1 · LD X0 · PLS M0 · P1 · END"));
     rig.set("X0", 1);
     rig.scan();
@@ -191,7 +191,7 @@ TEST_CASE("FOR/NEXT, BREAK, nesting errors", "[program][engine][control]") {
     CHECK(outcome.error->code == 4202);
 }
 
-TEST_CASE("SCJ jumps from the scan after its condition turned ON; JMP, GOEND", "[program][engine][control]") {
+TEST_CASE("SCJ jumps from the scan after its condition turned ON, JMP, GOEND", "[program][engine][control]") {
     Rig rig(dotted("LD X0 · SCJ P1 · LD SM400 · INC D0 · P1 · JMP P2 · LD SM400 · INC D1 · P2 · LD X1 · GOEND · "
                    "LD SM400 · INC D2 · END"));
     rig.set("X0", 1);
@@ -206,7 +206,7 @@ TEST_CASE("SCJ jumps from the scan after its condition turned ON; JMP, GOEND", "
     CHECK(rig.get("D2") == 3);
 }
 
-TEST_CASE("WDT restarts the watchdog measurement; STOP ends RUN after the scan", "[program][engine][control]") {
+TEST_CASE("WDT restarts the watchdog measurement, STOP ends RUN after the scan", "[program][engine][control]") {
     program::ProgramOptions options;
     options.wdt_ms = 10;
     // 600 000 x (LD + INC + NEXT) = 600 000 x 38 ns = 22.8 ms on Q26UDEHCPU: past 10 ms.

@@ -53,7 +53,7 @@ TEST_CASE("CSV rows, steps and kinds are the file's: continuation rows count as 
     CHECK(source.lines[4].kind == SourceLine::Kind::Instruction);
 }
 
-TEST_CASE("text lines are numbered from 1 counting blank and comment lines; steps are optional") {
+TEST_CASE("text lines are numbered from 1 counting blank and comment lines, steps are optional") {
     auto source = read_source("; self-hold\n\nLD X0\n  // comment\n10 OR Y0 ; note\nEND\n", "line1.il");
     REQUIRE(source.lines.size() == 3);
     CHECK(source.lines[0].row == 3);
@@ -64,7 +64,7 @@ TEST_CASE("text lines are numbered from 1 counting blank and comment lines; step
     CHECK(source.lines[2].row == 6);
 }
 
-TEST_CASE("the text form: * is a mnemonic, ;; a statement, P10 and P10: labels, string constants keep blanks and quotes") {
+TEST_CASE("the text form: * is a mnemonic, ,, a statement, P10 and P10: labels, string constants keep blanks and quotes") {
     auto source = read_source(
         ";; Motor 1 start\n"
         "ld x0\n"
@@ -159,7 +159,7 @@ TEST_CASE("Japanese column names and the 機種情報 row are read like the Engl
     CHECK(s.warnings.empty());
 }
 
-TEST_CASE("statement and pointer rows; a PI statement and a note are kept, never executed") {
+TEST_CASE("statement and pointer rows, a PI statement and a note are kept, never executed") {
     auto s = read_source(example_csv_file("\"\"\t\"Start\"\t\"\"\t\"\"\t\"\"\t\"\"\t\"\"\n"
                                           "\"0\"\t\"\"\t\"LD\"\t\"X0\"\t\"\"\t\"\"\t\"\"\n"
                                           "\"1\"\t\"\"\t\"CJ\"\t\"P10\"\t\"\"\t\"\"\t\"\"\n"
@@ -176,7 +176,7 @@ TEST_CASE("statement and pointer rows; a PI statement and a note are kept, never
     CHECK(s.lines[3].step == 3u);
 }
 
-TEST_CASE("the program name loses one pair of parentheses; an empty one is MAIN") {
+TEST_CASE("the program name loses one pair of parentheses, an empty one is MAIN") {
     CHECK(read_source(utf16le_file("\"(MAIN2)\"\r\n\"PLC Information:\"\t\"RCPU R08\"\r\n" + example_header.substr(example_header.find("\"Step")) +
                                    "\"0\"\t\"\"\t\"END\"\t\"\"\t\"\"\t\"\"\t\"\"\r\n"),
                       "n.csv")

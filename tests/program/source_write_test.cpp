@@ -75,7 +75,7 @@ TEST_CASE("nominal steps: sequence instructions and labels 1, OUT of a timer or 
     CHECK(steps("", {}, SourceLine::Kind::Statement) == 0);
 }
 
-TEST_CASE("an imported program keeps its step numbers on export; lines without one continue from the last") {
+TEST_CASE("an imported program keeps its step numbers on export, lines without one continue from the last") {
     auto source = read_source(example_csv_file("\"100\"\t\"\"\t\"LD\"\t\"X0\"\t\"\"\t\"\"\t\"\"\n"
                                                "\"107\"\t\"\"\t\"OUT\"\t\"Y0\"\t\"\"\t\"\"\t\"\"\n"),
                               "a.csv");
@@ -100,7 +100,7 @@ TEST_CASE("write_csv: statements, labels, notes and string constants as GX Works
     CHECK(write_csv(source) == expected);
 }
 
-TEST_CASE("write_text: one line each, ;; for statements, steps where the source had them") {
+TEST_CASE("write_text: one line each, ,, for statements, steps where the source had them") {
     auto csv = read_source(example_csv_file("\"\"\t\"Timer\"\t\"\"\t\"\"\t\"\"\t\"\"\t\"\"\n"
                                             "\"0\"\t\"\"\t\"LD\"\t\"X0\"\t\"\"\t\"\"\t\"\"\n"
                                             "\"1\"\t\"\"\t\"OUT\"\t\"T0\"\t\"\"\t\"\"\t\"coil\"\n"

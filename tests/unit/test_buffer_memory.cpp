@@ -40,7 +40,7 @@ TEST_CASE("§3 0613: read 78H-81H (10 words) as printed", "[buffer][spec]") {
     CHECK(wire.exchange(cpu, req) == wire.expect(ok(words(k0613))));
 }
 
-TEST_CASE("§3 1613: write 2680H-2683H as printed (data 2 and 3 chosen), then 0613 and U3E0\\G", "[buffer][spec]") {
+TEST_CASE("§3 1613: write 2680H-2683H as printed (data 2 and 3 chosen), then 0613 and U3E0¥G", "[buffer][spec]") {
     auto cpu = make_cpu("R08CPU");
     auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
     const Payload req{"13 16 00 00 80 26 00 00 04 00 00 20 34 12 78 56 00 00",
@@ -118,7 +118,7 @@ TEST_CASE("§4 0601: read Q62DA buffer memory 1H-2H as printed", "[buffer][spec]
     CHECK(wire.exchange(cpu, req) == wire.expect(ok(Payload{"01 00 12 00", "01001200"})));
 }
 
-TEST_CASE("§4 1601: write 03E8H to Q62DA buffer memory 18H as printed, U3\\G24 reads it", "[buffer][spec]") {
+TEST_CASE("§4 1601: write 03E8H to Q62DA buffer memory 18H as printed, U3¥G24 reads it", "[buffer][spec]") {
     auto cpu = with_q62da();
     auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
     // Address (18H × 2) + 1008H = 1038H; data "E803" = 03E8H, low byte first.

@@ -45,7 +45,7 @@ TEST_CASE("command table: the commands that cannot reach CPU No.2-4 (Appendix 3)
           std::set<std::uint16_t>{0x0613, 0x0619, 0x0801, 0x0802, 0x1613, 0x1617});
 }
 
-TEST_CASE("command table: device commands have a decoder; the write ones are flagged as writes", "[table]") {
+TEST_CASE("command table: device commands have a decoder, the write ones are flagged as writes", "[table]") {
     CHECK(commands_where(&CommandSpec::device_command) ==
           std::set<std::uint16_t>{0x0401, 0x0403, 0x0406, 0x0801, 0x1401, 0x1402, 0x1406});
     std::set<std::uint16_t> device_writes;

@@ -32,7 +32,7 @@ Payload read1(std::uint16_t sub, const Payload& dev) {
 
 }  // namespace
 
-TEST_CASE("§7.2 Example J1: W100 of network 1 (J1\\W100), 0080", "[extended][spec]") {
+TEST_CASE("§7.2 Example J1: W100 of network 1 (J1¥W100), 0080", "[extended][spec]") {
     auto cpu = make_station();
     net(cpu, 1).set_value(spec_of("W"), 0x100, 0x0123);
     cpu.memory().set_value(spec_of("W"), 0x100, 0x0999);  // the CPU's own W100 is another device
@@ -60,7 +60,7 @@ TEST_CASE("§7.2 Example J1: W100 of network 1 (J1\\W100), 0080", "[extended][sp
     }
 }
 
-TEST_CASE("§7.3 Example U1: buffer memory 1 of the module at start I/O 0030 (U3\\G1), 0080", "[extended][spec]") {
+TEST_CASE("§7.3 Example U1: buffer memory 1 of the module at start I/O 0030 (U3¥G1), 0080", "[extended][spec]") {
     auto cpu = make_station();
     module_memory(cpu).set_value(spec_of("G"), 1, 0x03E8);
     auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
@@ -84,7 +84,7 @@ TEST_CASE("§7.3 Example U1: buffer memory 1 of the module at start I/O 0030 (U3
     }
 }
 
-TEST_CASE("§7.4 Example U3E0: CPU buffer memory 1 of CPU No.1 (U3E0\\G1), 0082", "[extended][spec]") {
+TEST_CASE("§7.4 Example U3E0: CPU buffer memory 1 of CPU No.1 (U3E0¥G1), 0082", "[extended][spec]") {
     auto cpu = make_station();
     cpu.memory().set_value(spec_of("G"), 1, 0x5A5A);
     auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
@@ -131,7 +131,7 @@ TEST_CASE("U3E□ beyond CPU No.4 and U□ moved onto U3E0 by Z answer alike in 
           wire.expect(ok(word(0x5A5A))));
 }
 
-TEST_CASE("§7.5 Example JZ: W100 of network 1+Z0 (J1Z0\\W100), in 0403/0080", "[extended][spec]") {
+TEST_CASE("§7.5 Example JZ: W100 of network 1+Z0 (J1Z0¥W100), in 0403/0080", "[extended][spec]") {
     auto cpu = make_station();
     net(cpu, 1).set_value(spec_of("W"), 0x100, 0x0001);
     net(cpu, 2).set_value(spec_of("W"), 0x100, 0x0002);

@@ -347,7 +347,7 @@ TEST_CASE("JW-51CM buffer parameters are checked as the unit checks them", "[jw5
     CHECK_THAT(with(01370, {0xFC, 0x1F, 0x00, 0x00, 0x00, 0x00, 0x00, 0xC0}), Catch::Contains("info area"));
 }
 
-TEST_CASE("JW-51CM unit: an unconfirmed ring read is the unit's RAM, not in snapshots; the ring's HTTP resource", "[jw51cm][jw51cm-buffers]") {
+TEST_CASE("JW-51CM unit: an unconfirmed ring read is the unit's RAM, not in snapshots, the ring's HTTP resource", "[jw51cm][jw51cm-buffers]") {
     devicemodel::Cpu cpu{config::load_profile("R08CPU").cpu};
     auto settings = jw51cm::face().defaults();
     auto& options = *std::static_pointer_cast<jw51cm::Options>(settings.options);

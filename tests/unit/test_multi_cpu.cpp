@@ -55,7 +55,7 @@ TEST_CASE("CPU No.2 (module I/O 03E1) has its own device memory", "[multi_cpu]")
     }
 }
 
-TEST_CASE("U3E1\\G reaches CPU No.2's buffer memory, U3E0\\G CPU No.1's", "[multi_cpu][extended]") {
+TEST_CASE("U3E1¥G reaches CPU No.2's buffer memory, U3E0¥G CPU No.1's", "[multi_cpu][extended]") {
     MultiCpu station;
     Connection conn{station.engine};
     auto wire = GENERATE(kBinary3E, kAscii3E);

@@ -48,7 +48,7 @@ TEST_CASE("profiles: FX5 numbers X/Y in octal, the others in hexadecimal", "[pro
     }
 }
 
-TEST_CASE("SLMP on an FX5U: X7 then X10 are adjacent; X8 is refused", "[octal][spec]") {
+TEST_CASE("SLMP on an FX5U: X7 then X10 are adjacent, X8 is refused", "[octal][spec]") {
     auto cpu = make_cpu("FX5U-32MR");
     const auto& x = *devicemodel::find_by_symbol("X");
     auto& memory = cpu.memory();

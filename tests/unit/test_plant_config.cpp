@@ -26,7 +26,7 @@ TEST_CASE("a file without stations is one station, as before plants", "[plant]")
     CHECK(p.stations[0].server.ports[0].port == 6000);
 }
 
-TEST_CASE("top-level keys are every station's defaults; a station's own key replaces the default whole", "[plant]") {
+TEST_CASE("top-level keys are every station's defaults, a station's own key replaces the default whole", "[plant]") {
     auto p = plant(R"({"profile": "R08CPU", "bind": "127.0.0.1", "devices": {"D0": 1},
         "stations": [{"name": "press-1", "tcp_port": 20001},
                      {"name": "press-2", "profile": "R04CPU", "tcp_port": 20002, "udp_port": 21002, "devices": {"D1": 2}}]})");
@@ -114,7 +114,7 @@ TEST_CASE("plant mistakes name the station, the key and the fix", "[plant]") {
     CHECK_THROWS_WITH(plant(R"({"ports": [], "tcp_port": 1})"), Catch::Contains("both given"));
 }
 
-TEST_CASE("unnamed stations are station-N; a non-MELSEC station drops the default SLMP ports", "[plant]") {
+TEST_CASE("unnamed stations are station-N, a non-MELSEC station drops the default SLMP ports", "[plant]") {
     auto p = plant(R"({"ports": [{"transport": "tcp", "port": 5000}], "stations": [{}, {"kind": "ladder-motion", "hostlink": {"tcp_port": 0}}]})");
     CHECK(p.stations[0].server.name == "station-1");
     CHECK(p.stations[1].server.name == "station-2");

@@ -53,7 +53,7 @@ TEST_CASE("remote password per port: a port with it enabled starts locked, anoth
     CHECK(guarded.exchange(cpu, wire, read_words_req(Form::Q, "D0", 1)) == wire.expect(ok(word(7))));
 }
 
-TEST_CASE("online change disabled: writes in RUN answer 0055 and change nothing; reads and STOP writes are served",
+TEST_CASE("online change disabled: writes in RUN answer 0055 and change nothing, reads and STOP writes are served",
           "[port_settings]") {
     auto profile = GENERATE(as<std::string>{}, "R08CPU", "Q06UDVCPU-QJ71E71");
     auto cpu = make_cpu(profile);
@@ -72,7 +72,7 @@ TEST_CASE("online change disabled: writes in RUN answer 0055 and change nothing;
     CHECK(d0(cpu) == 6);
 }
 
-TEST_CASE("system protect: writes and remote operations answer 4004 and change nothing; reads are served",
+TEST_CASE("system protect: writes and remote operations answer 4004 and change nothing, reads are served",
           "[port_settings]") {
     auto cpu = configured_cpu("R08CPU", [](auto& c) { c.system_protect = true; });
     auto wire = GENERATE(kBinary3E, kAscii3E);

@@ -91,7 +91,7 @@ TEST_CASE("a profile that extends another keeps the base's facts and overrides w
     CHECK(derived.cpu.family == base.cpu.family);
 }
 
-TEST_CASE("a profile file may extend a file beside it; chains resolve", "[profiles]") {
+TEST_CASE("a profile file may extend a file beside it, chains resolve", "[profiles]") {
     auto dir = temp_dir();
     write_file(dir / "plant-base.json", R"({"name": "PlantBase", "extends": "Q26UDEHCPU", "description": "site base",
         "device_sizes": {"D": 4096}})");

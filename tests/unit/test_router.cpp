@@ -69,7 +69,7 @@ TEST_CASE("router: stations of the receiving module's network, the master, other
     CHECK(p.router.find(gw, 0, 2).error == EndCode::RouteStationNotFound);
 }
 
-TEST_CASE("router: a network no relay station links answers 4A01; more than 7 relay stations 4A03", "[route]") {
+TEST_CASE("router: a network no relay station links answers 4A01, more than 7 relay stations 4A03", "[route]") {
     Plant p;
     auto& gw = p.add("gw", {on(1, 1)});
     p.add("island", {on(5, 1)});
@@ -84,7 +84,7 @@ TEST_CASE("router: a network no relay station links answers 4A01; more than 7 re
     CHECK(p.router.find(gw, 9, 9).error == EndCode::RouteTooManyRelays);
 }
 
-TEST_CASE("router: a module's port leaves another station's request undecoded; a built-in port refuses it", "[route]") {
+TEST_CASE("router: a module's port leaves another station's request undecoded, a built-in port refuses it", "[route]") {
     // 0401 D100 ×1 for network 1 station 2.
     const std::vector<std::uint8_t> request{0x50, 0x00, 0x01, 0x02, 0xFF, 0x03, 0x00, 0x0C, 0x00, 0x10, 0x00,
                                             0x01, 0x04, 0x00, 0x00, 0x64, 0x00, 0x00, 0xA8, 0x01, 0x00};

@@ -40,7 +40,7 @@ struct Rig {
 
 }  // namespace
 
-TEST_CASE("runner set: the first runner that answers decides; later ones do not see the request", "[scenario][runner-set]") {
+TEST_CASE("runner set: the first runner that answers decides, later ones do not see the request", "[scenario][runner-set]") {
     Rig rig;
     rig.add({R"({"name": "a", "faults": [{"id": "slow", "do": "delay", "delay_ms": 50}]})"});
     rig.add({R"({"name": "b", "faults": [{"id": "refuse", "do": "end_code", "end_code": "C051"}]})"});
@@ -67,7 +67,7 @@ TEST_CASE("runner set: the first runner that answers decides; later ones do not 
     CHECK(rig.plan().silent);   // now c decides
 }
 
-TEST_CASE("runner set: names and ids are unique across runners; a rejected add changes nothing", "[scenario][runner-set]") {
+TEST_CASE("runner set: names and ids are unique across runners, a rejected add changes nothing", "[scenario][runner-set]") {
     Rig rig;
     rig.add({R"({"name": "a", "faults": [{"id": "f", "do": "no_response"}]})"});
     CHECK_THROWS_WITH(rig.add({R"({"name": "a"})"}),

@@ -63,7 +63,7 @@ TEST_CASE("station snapshot: restore gives device memory, buffer memory and the 
     }
 }
 
-TEST_CASE("station snapshot: the node (identity, parameters, a write under way) comes back; the file form has none", "[station][snapshot][node]") {
+TEST_CASE("station snapshot: the node (identity, parameters, a write under way) comes back, the file form has none", "[station][snapshot][node]") {
     slmp::station::Station station(slmp::config::load_profile("R08CPU"), {});
     auto& node = station.cpu().node();
     node.identity().host_name = "before";
@@ -113,7 +113,7 @@ TEST_CASE("station snapshot: take and restore times of an R08CPU with default si
     CHECK(cpu.memory().value(*d, 5) == 0);
 }
 
-TEST_CASE("virtual clock: frozen it moves only by advance(); set() keeps the mode", "[station][clock]") {
+TEST_CASE("virtual clock: frozen it moves only by advance(), set() keeps the mode", "[station][clock]") {
     slmp::station::VirtualClock clock(1, true);
     const auto start = clock.now();
     CHECK(clock.now() == start);
