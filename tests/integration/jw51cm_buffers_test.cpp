@@ -9,25 +9,14 @@
 #include "http_client.hpp"
 #include "sim_process.hpp"
 #include "sockets.hpp"
+#include "support/jw51cm_frames.hpp"
 
 using namespace slmp::test;
 
 namespace {
 
-Bytes request(Bytes after_id) {
-    Bytes frame(40, 0);
-    frame.push_back(0x47);
-    frame.push_back(0x00);
-    frame.insert(frame.end(), after_id.begin(), after_id.end());
-    return frame;
-}
-Bytes response(Bytes after_id) {
-    Bytes frame(40, 0);
-    frame.push_back(0x45);
-    frame.push_back(0x00);
-    frame.insert(frame.end(), after_id.begin(), after_id.end());
-    return frame;
-}
+using jw51cm::request;
+using jw51cm::response;
 
 // Designated buffer 01: 16 bytes at register 09100 (D32). Ring 01: the manual's,
 // PLC -> host, 1 KB at register 29000, pointers at 09000 (D0, D1). Ring 02:

@@ -11,25 +11,14 @@
 #include "http_client.hpp"
 #include "sim_process.hpp"
 #include "sockets.hpp"
+#include "support/jw51cm_frames.hpp"
 
 using namespace slmp::test;
 
 namespace {
 
-Bytes request(Bytes after_id) {
-    Bytes frame(40, 0);
-    frame.push_back(0x47);
-    frame.push_back(0x00);
-    frame.insert(frame.end(), after_id.begin(), after_id.end());
-    return frame;
-}
-Bytes response(Bytes after_id) {
-    Bytes frame(40, 0);
-    frame.push_back(0x45);
-    frame.push_back(0x00);
-    frame.insert(frame.end(), after_id.begin(), after_id.end());
-    return frame;
-}
+using jw51cm::request;
+using jw51cm::response;
 
 SimOptions sharp_jw() {
     SimOptions options;

@@ -10,26 +10,15 @@
 #include "config/config.hpp"
 #include "frontends/jw51cm/command_table.hpp"
 #include "frontends/jw51cm/computer_link.hpp"
+#include "support/jw51cm_frames.hpp"
 
 namespace {
 
 using namespace slmp;
 using Bytes = std::vector<std::uint8_t>;
 
-Bytes request(Bytes after_id) {
-    Bytes frame(40, 0);
-    frame.push_back(0x47);
-    frame.push_back(0x00);
-    frame.insert(frame.end(), after_id.begin(), after_id.end());
-    return frame;
-}
-Bytes response(Bytes after_id) {
-    Bytes frame(40, 0);
-    frame.push_back(0x45);
-    frame.push_back(0x00);
-    frame.insert(frame.end(), after_id.begin(), after_id.end());
-    return frame;
-}
+using test::jw51cm::request;
+using test::jw51cm::response;
 
 // 1997-12-17 21:12:37 UTC, the manual's clock examples.
 std::chrono::system_clock::time_point manual_time() {

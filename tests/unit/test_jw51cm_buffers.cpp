@@ -16,26 +16,15 @@
 #include "frontends/jw51cm/buffers.hpp"
 #include "frontends/jw51cm/computer_link.hpp"
 #include "frontends/jw51cm/face.hpp"
+#include "support/jw51cm_frames.hpp"
 
 namespace {
 
 using namespace slmp;
 using Bytes = std::vector<std::uint8_t>;
 
-Bytes request(Bytes after_id) {
-    Bytes frame(40, 0);
-    frame.push_back(0x47);
-    frame.push_back(0x00);
-    frame.insert(frame.end(), after_id.begin(), after_id.end());
-    return frame;
-}
-Bytes response(Bytes after_id) {
-    Bytes frame(40, 0);
-    frame.push_back(0x45);
-    frame.push_back(0x00);
-    frame.insert(frame.end(), after_id.begin(), after_id.end());
-    return frame;
-}
+using test::jw51cm::request;
+using test::jw51cm::response;
 
 void set_parameters(jw51cm::Options& options, std::uint32_t octal_address, Bytes bytes) {
     std::copy(bytes.begin(), bytes.end(), options.parameters.begin() + octal_address);
