@@ -1,7 +1,7 @@
 // Sharp JW-51CM computer-link frames for the tests: the 40-byte header (zeros
 // will do: the unit echoes what it needs of it), then the ID byte and a 00 —
 // 47 for a host's request, 45 for the unit's response — then what follows the
-// ID (docs/jw51cm.md; the spec's §4.1).
+// ID (docs/jw51cm.md, the frame's layout).
 #pragma once
 
 #include <cstdint>
