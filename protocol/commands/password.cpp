@@ -45,7 +45,7 @@ EndCode password_unlock(CommandContext& ctx) {
     if (auto code = read_request(ctx, request); code != EndCode::Ok) return code;
     auto& runtime = request.station->runtime();
     if (ctx.session.password_unlocked || !password_guards(*request.station, ctx.session)) return EndCode::Ok;
-    auto code = verdict(runtime.password().check(request.text, runtime.now()));
+    auto code = verdict(runtime.password().check(request.text, request_time(ctx.session, *request.station)));
     if (code == EndCode::Ok) ctx.session.password_unlocked = true;
     return code;
 }
@@ -57,7 +57,7 @@ EndCode password_lock(CommandContext& ctx) {
     // Without a password guarding this port nothing can match (chosen: C810, not a silent 0000).
     if (!password_guards(*request.station, ctx.session)) return EndCode::RemotePasswordMismatch;
     if (!ctx.session.password_unlocked) return EndCode::Ok;
-    auto code = verdict(runtime.password().check(request.text, runtime.now()));
+    auto code = verdict(runtime.password().check(request.text, request_time(ctx.session, *request.station)));
     if (code == EndCode::Ok) ctx.session.password_unlocked = false;
     return code;
 }

@@ -83,6 +83,22 @@ TEST_CASE("wrong passwords: C810, then the C815 lock-out", "[password]") {
     CHECK(a.exchange(cpu, wire, unlock("secret")) == wire.expect(ok()));
 }
 
+// The station gives each request its clock's time (Session::now); before the
+// CPU's first scan (a frozen clock not yet stepped) the last scan's time is the
+// epoch, and a lock-out counted from it ended at the first scan.
+TEST_CASE("the lock-out counts on the request's clock, also before the CPU's first scan", "[password]") {
+    auto wire = GENERATE(kBinary3E, kAscii3E);
+    auto cpu = cpu_with_password("secret", "R08CPU", 1);
+    Client a(1);
+    const auto start = std::chrono::steady_clock::time_point{} + std::chrono::hours(1000);
+    a.session.now = start;
+    CHECK(a.exchange(cpu, wire, unlock("Secret")) == wire.expect(error(0xC810, 0x1630, 0x0000)));   // the lock-out begins
+    a.session.now = start + std::chrono::seconds(59);
+    CHECK(a.exchange(cpu, wire, unlock("secret")) == wire.expect(error(0xC815, 0x1630, 0x0000)));
+    a.session.now = start + std::chrono::seconds(61);
+    CHECK(a.exchange(cpu, wire, unlock("secret")) == wire.expect(ok()));
+}
+
 TEST_CASE("Q/L: 4-character passwords, bad lengths", "[password]") {
     auto wire = GENERATE(kBinary3E, kAscii3E);
     auto cpu = cpu_with_password("A1b2", "Q26UDEHCPU");
