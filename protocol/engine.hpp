@@ -52,7 +52,7 @@ struct Session {
     // The port's own network and station numbers (set by the transport from
     // the port's configuration); requests addressed to them are served.
     StationNumbers own{};
-    // A session at the station a route leads to (station/router.hpp): its
+    // A session at the station a route leads to (station/network_map.hpp): its
     // requests were routed here, their network/station already resolved.
     bool routed = false;
     // Commands per connection (SLMP Reference Manual §3.3), set by the transport before each

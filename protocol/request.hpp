@@ -68,7 +68,7 @@ struct Request {
     EndCode route_error = EndCode::Ok;     // the access route names no CPU of this station
     // The route names another network/station and the port relays (a module's
     // port): only the header is decoded here; the station the plant's router
-    // finds decodes the rest (station/router.hpp). `route_error` is what it
+    // finds decodes the rest (station/network_map.hpp). `route_error` is what it
     // gets when nothing routes it.
     bool elsewhere = false;
     std::size_t target = 0;                // CPU No. - 1 the module I/O number selects

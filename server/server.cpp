@@ -104,11 +104,11 @@ Server::Server(const config::PlantConfig& plant)
                                                       bind_address(http_bind()), plant_);
 }
 
-// The stations' network modules make one router (docs/plants.md, "Networks
+// The stations' network modules make one network map (docs/plants.md, "Networks
 // and routes"); every station reads it, no one changes it after this.
 void Server::join_networks() {
-    for (auto& s : stations_) router_.add(s->station, s->settings.server.name, s->settings.server.networks);
-    for (auto& s : stations_) s->station.join(router_);
+    for (auto& s : stations_) networks_.add(s->station, s->settings.server.name, s->settings.server.networks);
+    for (auto& s : stations_) s->station.join(networks_);
 }
 
 // "http": {"bind"}, else the stations' bind address when they share one, else

@@ -12,7 +12,7 @@
 #include "config/plant_config.hpp"
 #include "control/http/http_server.hpp"
 #include "server/listeners.hpp"
-#include "station/router.hpp"
+#include "station/network_map.hpp"
 #include "station/station.hpp"
 
 namespace slmp::server {
@@ -66,7 +66,7 @@ private:
     std::vector<std::unique_ptr<Loop>> loops_;
     station::Home main_;                  // the HTTP server and the signals, on the last loop
     std::vector<std::unique_ptr<Served>> stations_;
-    station::Router router_;   // the plant's networks: read-only once the stations joined it
+    station::NetworkMap networks_;   // the plant's networks: read-only once the stations joined it
     std::unique_ptr<control::HttpServer> http_;   // null with --no-http; destroyed before the stations
     boost::asio::signal_set signals_;
     boost::asio::signal_set snapshot_signal_;

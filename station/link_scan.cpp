@@ -2,17 +2,17 @@
 
 #include <memory>
 
-#include "station/router.hpp"
+#include "station/network_map.hpp"
 #include "station/station.hpp"
 
 namespace slmp::station {
 
-LinkScan::LinkScan(Station& self, const Router& router, const std::vector<config::NetworkConfig>& networks) : self_(self) {
+LinkScan::LinkScan(Station& self, const NetworkMap& map, const std::vector<config::NetworkConfig>& networks) : self_(self) {
     for (const auto& n : networks) {
         if (n.station == 0) continue;
         std::vector<Station*> to;
-        auto members = router.networks().find(n.number);
-        if (members != router.networks().end())
+        auto members = map.networks().find(n.number);
+        if (members != map.networks().end())
             for (const auto& m : members->second)
                 if (m.station != &self) to.push_back(m.station);
         if (to.empty()) continue;

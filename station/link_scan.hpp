@@ -14,14 +14,14 @@
 
 namespace slmp::station {
 
-class Router;
+class NetworkMap;
 class Station;
 
 class LinkScan {
 public:
     // `self`'s send ranges (its "networks" entries with a station No.) and
-    // the stations of each network, from the plant's router.
-    LinkScan(Station& self, const Router& router, const std::vector<config::NetworkConfig>& networks);
+    // the stations of each network, from the plant's network map.
+    LinkScan(Station& self, const NetworkMap& map, const std::vector<config::NetworkConfig>& networks);
     bool empty() const { return sends_.empty(); }
     // After each END of `self`'s scan, on its strand.
     void scanned();

@@ -25,7 +25,7 @@
 #include "scenarios/runner.hpp"
 #include "scenarios/runner_set.hpp"
 #include "station/activity.hpp"
-#include "station/router.hpp"
+#include "station/network_map.hpp"
 
 namespace slmp::station {
 
@@ -35,7 +35,7 @@ struct Handled {
     scenarios::Delivery delivery;   // how to send outcome.response
     bool reset = false;             // close with RST (SO_LINGER 0) instead of FIN
     // Not served here: a module's port passes the frame of outcome.consumed
-    // bytes on to another station (station/router.hpp; Relays::pass_on).
+    // bytes on to another station (station/network_map.hpp; Relays::pass_on).
     std::optional<Relay> relay;
     // Not served here either: proxy mode sends the frame of outcome.consumed
     // bytes to the station's upstream (Station::pass_on; docs/twin.md, "Proxy").

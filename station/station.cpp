@@ -179,10 +179,10 @@ Handled Station::handle(Ticket& ticket, protocol::Session& session, const protoc
     return serve(std::move(ticket.request), ticket.bytes, session, peer, ticket.service ? &*ticket.service : nullptr);
 }
 
-void Station::join(const Router& router) {
-    router_ = &router;
+void Station::join(const NetworkMap& networks) {
+    network_map_ = &networks;
     if (!scan_) return;
-    auto link = std::make_unique<LinkScan>(*this, router, config_.networks);
+    auto link = std::make_unique<LinkScan>(*this, networks, config_.networks);
     if (link->empty()) return;
     link_scan_ = std::move(link);
     scan_->after_scan([this](std::chrono::steady_clock::time_point) { link_scan_->scanned(); });
@@ -191,9 +191,9 @@ void Station::join(const Router& router) {
 // docs/plants.md, "Networks and routes".
 std::optional<Handled> Station::route(protocol::Request& request, std::span<const std::uint8_t> input,
                                       protocol::DataCodePolicy policy) {
-    if (!request.elsewhere || !router_) return std::nullopt;
+    if (!request.elsewhere || !network_map_) return std::nullopt;
     const auto& route = request.header.route;
-    auto found = router_->find(*this, route.network, route.station);
+    auto found = network_map_->find(*this, route.network, route.station);
     if (found.error != protocol::EndCode::Ok) {
         request.route_error = found.error;
         request.elsewhere = false;

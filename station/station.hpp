@@ -118,13 +118,13 @@ public:
     // next jitter value, so call it in arrival order.
     Ticket schedule(std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy, const protocol::Session& session,
                     std::chrono::steady_clock::time_point arrival);
-    // A plant's networks (station/router.hpp): a request naming another
+    // A plant's networks (station/network_map.hpp): a request naming another
     // station on a module's port (the profile's "relays") goes where the
-    // router says. Set before the io_context runs; without it such a request
+    // network map says. Set before the io_context runs; without it such a request
     // gets 4A01/4A02 as on a lone station.
     // Its link scan starts sending its LB/LW (station/link_scan.hpp).
-    void join(const Router& router);
-    const Router* router() const { return router_; }
+    void join(const NetworkMap& networks);
+    const NetworkMap* network_map() const { return network_map_; }
     // Its home strand (a bare station has none: no relays reach it).
     const Home& home() const { return *home_; }
     // A request a route brought here (Relays::pass_on), on this station's
@@ -249,7 +249,7 @@ private:
     // The monitoring timer's answer: CF71 (1E: 60), nothing executed.
     static protocol::Outcome timed_out(const protocol::Request& request, std::chrono::milliseconds timer);
     // A request for another station (Request::elsewhere): its answer when the
-    // router finds no way (the request's route_error becomes the router's
+    // network map finds no way (the request's route_error becomes the map's
     // code) or finds this station (decoded again, as routed here); a Handled
     // with `relay` when another station serves it.
     std::optional<Handled> route(protocol::Request& request, std::span<const std::uint8_t> input,
@@ -280,7 +280,7 @@ private:
 
     config::ServerConfig config_;   // with the scenarios' initial state joined
     std::optional<Home> home_;      // null in a bare station
-    const Router* router_ = nullptr;
+    const NetworkMap* network_map_ = nullptr;
     std::unique_ptr<LinkScan> link_scan_;                // null: sends no link devices
     protocol::Session passing_;                          // the scenario faults' view of requests it passes on
     std::shared_ptr<spdlog::logger> log_ = process_logger();

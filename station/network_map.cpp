@@ -1,6 +1,6 @@
 // The plant's networks and the relay of a request to another station
-// (router.hpp; docs/plants.md, "Networks and routes").
-#include "station/router.hpp"
+// (network_map.hpp; docs/plants.md, "Networks and routes").
+#include "station/network_map.hpp"
 
 #include <algorithm>
 #include <deque>
@@ -16,7 +16,7 @@ namespace slmp::station {
 namespace asio = boost::asio;
 using protocol::EndCode;
 
-void Router::add(Station& station, const std::string& name, const std::vector<config::NetworkConfig>& networks) {
+void NetworkMap::add(Station& station, const std::string& name, const std::vector<config::NetworkConfig>& networks) {
     // The plant's configuration refused a station No. or a master given twice (plant_config.cpp).
     for (const auto& n : networks) {
         if (n.station == 0) continue;   // link devices only: no module station No. to route to
@@ -25,7 +25,7 @@ void Router::add(Station& station, const std::string& name, const std::vector<co
     }
 }
 
-const Router::Member* Router::member(std::uint16_t network, std::uint8_t station) const {
+const NetworkMap::Member* NetworkMap::member(std::uint16_t network, std::uint8_t station) const {
     auto it = networks_.find(network);
     if (it == networks_.end()) return nullptr;
     const auto& members = it->second;
@@ -44,7 +44,7 @@ const Router::Member* Router::member(std::uint16_t network, std::uint8_t station
     return nullptr;
 }
 
-Router::Found Router::find(Station& from, std::uint8_t network, std::uint8_t station) const {
+NetworkMap::Found NetworkMap::find(Station& from, std::uint8_t network, std::uint8_t station) const {
     Found found;
     found.relay.hops.push_back(&from);
     if (network == 0x00) {   // network 00 names only the own station (FF); another station: 4A02

@@ -1,19 +1,19 @@
-// The plant's router (station/router.hpp; docs/plants.md, "Networks and
+// The plant's network map (station/network_map.hpp; docs/plants.md, "Networks and
 // routes"): who a network/station pair names, the relay stations on the way,
 // and the codes of the refusals (docs/end-codes.md, "Routes through a module").
 // And the decoder's half: a module's port leaves another station's request
-// undecoded for the router, a built-in port refuses it.
+// undecoded for the network map, a built-in port refuses it.
 #include <catch2/catch.hpp>
 
 #include <deque>
 
 #include "config/config.hpp"
 #include "protocol/engine.hpp"
-#include "station/router.hpp"
+#include "station/network_map.hpp"
 #include "station/station.hpp"
 
 using slmp::protocol::EndCode;
-using slmp::station::Router;
+using slmp::station::NetworkMap;
 using slmp::station::Station;
 
 namespace {
@@ -28,17 +28,17 @@ slmp::config::NetworkConfig on(std::uint16_t network, std::uint8_t station, bool
 
 struct Plant {
     std::deque<Station> stations;
-    Router router;
+    NetworkMap map;
     Station& add(const std::string& name, std::vector<slmp::config::NetworkConfig> networks) {
         auto& s = stations.emplace_back(slmp::config::load_profile("R08CPU"), slmp::protocol::EngineOptions{});
-        router.add(s, name, networks);
+        map.add(s, name, networks);
         return s;
     }
 };
 
 }  // namespace
 
-TEST_CASE("router: stations of the receiving module's network, the master, other networks through relay stations",
+TEST_CASE("network map: stations of the receiving module's network, the master, other networks through relay stations",
           "[route]") {
     Plant p;
     auto& gw = p.add("gw", {on(1, 1)});
@@ -47,44 +47,44 @@ TEST_CASE("router: stations of the receiving module's network, the master, other
     auto& relay = p.add("relay", {on(1, 4), on(2, 1)});
     auto& packer = p.add("packer", {on(2, 3)});
 
-    auto found = p.router.find(gw, 1, 2);
+    auto found = p.map.find(gw, 1, 2);
     CHECK(found.error == EndCode::Ok);
     CHECK(found.relay.target == &press);
     CHECK(found.relay.hops == std::vector<Station*>{&gw});
-    CHECK(p.router.find(gw, 1, 0x7D).relay.target == &welder);
-    CHECK(p.router.find(gw, 1, 0x7E).relay.target == &welder);
-    CHECK(p.router.find(gw, 1, 1).relay.target == &gw);
-    CHECK(p.router.find(gw, 0, 0xFF).relay.target == &gw);
+    CHECK(p.map.find(gw, 1, 0x7D).relay.target == &welder);
+    CHECK(p.map.find(gw, 1, 0x7E).relay.target == &welder);
+    CHECK(p.map.find(gw, 1, 1).relay.target == &gw);
+    CHECK(p.map.find(gw, 0, 0xFF).relay.target == &gw);
 
-    found = p.router.find(gw, 2, 3);
+    found = p.map.find(gw, 2, 3);
     CHECK(found.error == EndCode::Ok);
     CHECK(found.relay.target == &packer);
     CHECK(found.relay.hops == std::vector<Station*>{&gw, &relay});
     // From the far side the same way back; 7D on network 2 is its lowest station No. (relay, 1).
-    CHECK(p.router.find(packer, 1, 2).relay.hops == std::vector<Station*>{&packer, &relay});
-    CHECK(p.router.find(packer, 2, 0x7D).relay.target == &relay);
+    CHECK(p.map.find(packer, 1, 2).relay.hops == std::vector<Station*>{&packer, &relay});
+    CHECK(p.map.find(packer, 2, 0x7D).relay.target == &relay);
 
-    CHECK(p.router.find(gw, 3, 1).error == EndCode::RouteNetworkNotFound);
-    CHECK(p.router.find(gw, 1, 9).error == EndCode::RouteStationNotFound);
-    CHECK(p.router.find(gw, 0, 2).error == EndCode::RouteStationNotFound);
+    CHECK(p.map.find(gw, 3, 1).error == EndCode::RouteNetworkNotFound);
+    CHECK(p.map.find(gw, 1, 9).error == EndCode::RouteStationNotFound);
+    CHECK(p.map.find(gw, 0, 2).error == EndCode::RouteStationNotFound);
 }
 
-TEST_CASE("router: a network no relay station links answers 4A01, more than 7 relay stations 4A03", "[route]") {
+TEST_CASE("network map: a network no relay station links answers 4A01, more than 7 relay stations 4A03", "[route]") {
     Plant p;
     auto& gw = p.add("gw", {on(1, 1)});
     p.add("island", {on(5, 1)});
-    CHECK(p.router.find(gw, 5, 1).error == EndCode::RouteNetworkNotFound);
+    CHECK(p.map.find(gw, 5, 1).error == EndCode::RouteNetworkNotFound);
     for (std::uint16_t k = 1; k <= 8; ++k) p.add("hop", {on(k, 2), on(static_cast<std::uint16_t>(k + 1), 3)});
     auto& end7 = p.add("end-7", {on(8, 9)});
     p.add("end-8", {on(9, 9)});
-    auto seven = p.router.find(gw, 8, 9);
+    auto seven = p.map.find(gw, 8, 9);
     CHECK(seven.error == EndCode::Ok);
     CHECK(seven.relay.target == &end7);
-    CHECK(seven.relay.hops.size() == 1 + Router::kMaxRelayStations);
-    CHECK(p.router.find(gw, 9, 9).error == EndCode::RouteTooManyRelays);
+    CHECK(seven.relay.hops.size() == 1 + NetworkMap::kMaxRelayStations);
+    CHECK(p.map.find(gw, 9, 9).error == EndCode::RouteTooManyRelays);
 }
 
-TEST_CASE("router: a module's port leaves another station's request undecoded, a built-in port refuses it", "[route]") {
+TEST_CASE("network map: a module's port leaves another station's request undecoded, a built-in port refuses it", "[route]") {
     // 0401 D100 ×1 for network 1 station 2.
     const std::vector<std::uint8_t> request{0x50, 0x00, 0x01, 0x02, 0xFF, 0x03, 0x00, 0x0C, 0x00, 0x10, 0x00,
                                             0x01, 0x04, 0x00, 0x00, 0x64, 0x00, 0x00, 0xA8, 0x01, 0x00};

@@ -32,7 +32,7 @@ struct Relay {
     std::vector<Station*> hops;   // the receiving station, then each relay station
 };
 
-class Router {
+class NetworkMap {
 public:
     // `station` with its network modules (the "networks" entries with a
     // station No.), as the plant's configuration checked them.
