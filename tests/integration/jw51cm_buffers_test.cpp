@@ -9,7 +9,7 @@
 #include "http_client.hpp"
 #include "sim_process.hpp"
 #include "sockets.hpp"
-#include "support/jw51cm_frames.hpp"
+#include "jw51cm_link.hpp"
 
 using namespace slmp::test;
 
@@ -34,13 +34,9 @@ SimOptions buffered() {
     return options;
 }
 
-std::uint16_t jw_tcp(const SimProcess& sim) { return sim.ready().at("jw51cm").at("tcp").at(0).get<std::uint16_t>(); }
-std::uint16_t jw_udp(const SimProcess& sim) { return sim.ready().at("jw51cm").at("udp").at(0).get<std::uint16_t>(); }
-
-Bytes ask(TcpClient& client, const Bytes& after_id, std::size_t answer_bytes) {
-    REQUIRE(client.send(request(after_id)));
-    return client.read_exactly(answer_bytes);
-}
+using jw51cm::ask;
+using jw51cm::jw_tcp;
+using jw51cm::jw_udp;
 
 HttpResponse post(std::uint16_t port, const std::string& target, const std::string& body = "") {
     return http(port, "POST", target, body);
