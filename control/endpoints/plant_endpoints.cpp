@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <map>
 #include <optional>
 
 #include "config/config.hpp"
 #include "config/shard.hpp"
 #include "config/station_pattern.hpp"
 #include "control/endpoints/station_side.hpp"
+#include "station/network_map.hpp"
 #include "station/scan_loop.hpp"
 
 namespace slmp::control {
@@ -17,6 +19,42 @@ namespace slmp::control {
 using nlohmann::json;
 
 namespace {
+
+// The network modules of `station`: each network's No., the module's station No.
+// and whether it is the network's master (docs/plants.md, "Networks and routes").
+json station_networks(const station::Station& station) {
+    auto list = json::array();
+    const auto* map = station.network_map();
+    if (!map) return list;
+    for (const auto& [number, members] : map->networks())
+        for (const auto& member : members)
+            if (member.station == &station)
+                list.push_back({{"number", number}, {"station", member.number}, {"master", member.master}});
+    return list;
+}
+
+// GET /api/networks: each network's stations, and the stations that relay
+// between it and other networks (a module on each). The map is read-only
+// once the plant runs, so the HTTP thread reads it without a hop.
+json networks_overview(const station::NetworkMap& map) {
+    std::map<const station::Station*, std::vector<std::uint16_t>> on;   // the networks each station is on
+    for (const auto& [number, members] : map.networks())
+        for (const auto& member : members) on[member.station].push_back(number);
+    auto list = json::array();
+    for (const auto& [number, members] : map.networks()) {
+        auto stations = json::array();
+        auto relays = json::array();
+        for (const auto& member : members) {
+            stations.push_back({{"name", member.name}, {"station", member.number}, {"master", member.master}});
+            auto others = json::array();
+            for (auto other : on[member.station])
+                if (other != number) others.push_back(other);
+            if (!others.empty()) relays.push_back({{"name", member.name}, {"to_networks", std::move(others)}});
+        }
+        list.push_back({{"number", number}, {"stations", std::move(stations)}, {"relays", std::move(relays)}});
+    }
+    return list;
+}
 
 // One line of the plant overview; runs on the station's thread.
 json summary(StationSide& side) {
@@ -36,7 +74,8 @@ json summary(StationSide& side) {
             {"requests", totals.requests},
             {"errors", totals.errors},
             {"scans", scan ? scan->scans() : 0},
-            {"wakeups", scan ? scan->wakeups() : 0}};
+            {"wakeups", scan ? scan->wakeups() : 0},
+            {"networks", station_networks(side.station)}};
 }
 
 // ?offset=N, ?limit=N, ?shard=N: a whole number, else 400 naming it.
@@ -131,6 +170,11 @@ void add_plant_endpoints(Router& router, Plant& plant) {
         return deferred([side]() -> boost::asio::awaitable<Reply> {
             co_return json_reply(co_await on_station(*side, [side] { return summary(*side); }));
         });
+    });
+    // The plant's networks: who is which station No. where, who relays to whom.
+    router.add(Verb::get, "/api/networks", {}, [&plant](const ApiRequest&) {
+        const auto* map = plant.stations.empty() ? nullptr : plant.stations.front()->station.network_map();
+        return json_reply(map ? networks_overview(*map) : json::array());
     });
     // A scenario (faults, triggers) on a group of stations at once, all or
     // nothing: a partition of press-7 for 10 s, a power cycle of a line.

@@ -8,6 +8,7 @@
 // A plant of more than PLANT_PAGE stations (a 10 000-station process) is read a
 // page at a time: the first PLANT_PAGE stations whose name contains the filter
 // (the server filters, any case), so typing narrows what is polled.
+// Below the list, the plant's networks (GET /api/networks) when it has any.
 // Uses api(), showMessage() and $() from app.js.
 'use strict';
 
@@ -131,6 +132,53 @@ async function pollStations() {
   }
 }
 
+// The plant's networks from GET /api/networks (fixed while the process runs,
+// so read once): a bus line a network with its stations by station No., the
+// master in bold, and "⇄ 2" on a station that relays to network 2.
+async function showNetworks() {
+  let networks;
+  try {
+    const response = await fetch('/api/networks');
+    if (!response.ok) throw new Error(`GET /api/networks: HTTP ${response.status}`);
+    networks = await response.json();
+  } catch (e) {
+    showMessage(`networks: ${e.message}`);
+    return;
+  }
+  const list = $('#network-list');
+  list.replaceChildren();
+  for (const n of networks) {
+    const row = document.createElement('div');
+    row.className = 'network';
+    row.dataset.network = n.number;
+    const name = document.createElement('span');
+    name.className = 'network-name';
+    name.textContent = `network ${n.number}`;
+    const bus = document.createElement('div');
+    bus.className = 'network-bus';
+    for (const s of n.stations) {
+      const chip = document.createElement('a');
+      chip.className = `network-station${s.master ? ' master' : ''}`;
+      chip.href = `#/stations/${encodeURIComponent(s.name)}`;
+      chip.dataset.station = s.name;
+      chip.textContent = `${s.station} ${s.name}`;
+      chip.title = `station No. ${s.station} on network ${n.number}${s.master ? ', the master' : ''}`;
+      const relay = n.relays.find((r) => r.name === s.name);
+      if (relay) {
+        const mark = document.createElement('span');
+        mark.className = 'relay';
+        mark.textContent = `⇄ ${relay.to_networks.join(', ')}`;
+        mark.title = `relays to network ${relay.to_networks.join(', ')}`;
+        chip.append(mark);
+      }
+      bus.append(chip);
+    }
+    row.append(name, bus);
+    list.append(row);
+  }
+  $('#networks').hidden = networks.length === 0;
+}
+
 function startPlant(stations, total) {
   plant.total = total;
   plant.large = total > PLANT_PAGE;
@@ -146,5 +194,6 @@ function startPlant(stations, total) {
   // The address edited by hand (main.js reloads only for another station).
   window.addEventListener('hashchange', () => { filter.value = filterInHash(); applyFilter(); });
   showStations(stations, performance.now(), total);
+  showNetworks();
   setInterval(pollStations, PLANT_POLL_MS);
 }

@@ -21,7 +21,16 @@ const {
 
 const { binary, screenshot: screenshotFile, browserPath } = parseArgs(process.argv);
 
-const PLANT = { bind: '127.0.0.1', http: { port: 0 }, stations: [{ template: {}, count: 3, name: 'p{i}', tcp_port: 0 }] };
+// p2 is network 1's master and relays to network 2, where p3 is.
+const PLANT = {
+  bind: '127.0.0.1',
+  http: { port: 0 },
+  stations: [
+    { name: 'p1', tcp_port: 0, networks: [{ number: 1, station: 1 }] },
+    { name: 'p2', tcp_port: 0, networks: [{ number: 1, station: 2, master: true }, { number: 2, station: 1 }] },
+    { name: 'p3', tcp_port: 0, networks: [{ number: 2, station: 2 }] },
+  ],
+};
 
 async function main() {
   const args = (dir) => {
@@ -58,6 +67,15 @@ async function main() {
         assertEqual(await cell(name, 'slmp'), `127.0.0.1 · TCP ${tcpPort(name)}`, `${name} SLMP`);
         assertEqual(await page.getAttribute(`#stations tr[data-station="${name}"] td[data-column="name"] a`, 'href'), `#/stations/${name}`, `${name} link`);
       }
+    });
+
+    await check('the networks panel draws each network with its stations, the master and the relay', async () => {
+      await page.waitForSelector('#networks:not([hidden]) .network[data-network="2"]');
+      const drawn = await page.evaluate(() => [...document.querySelectorAll('#network-list .network')].map((n) => [
+        n.querySelector('.network-name').textContent,
+        [...n.querySelectorAll('.network-station')].map((s) => `${s.textContent}${s.classList.contains('master') ? ' (master)' : ''}`)]));
+      assertEqual(drawn, [['network 1', ['1 p1', '2 p2⇄ 2 (master)']], ['network 2', ['1 p2⇄ 1', '2 p3']]], 'networks');
+      assertEqual(await page.getAttribute('#network-list .network[data-network="2"] a[data-station="p3"]', 'href'), '#/stations/p3', 'p3 link');
     });
 
     await check('requests over SLMP to p2 count in p2\'s row only: connections, requests, errors', async () => {
