@@ -55,6 +55,14 @@ json request_json(const station::RequestRecord& record, devicemodel::Numbering n
              {"bytes_out", outcome.response.size()},
              {"note", outcome.note}};
     if (!outcome.named.empty()) out["named"] = outcome.named;   // label names (the devices column of a label request)
+    // The access route it named when not the own station's 00/FF/03FF/00: a
+    // request a module's port passed on through the plant's networks, or one
+    // refused for its route (docs/plants.md, "Networks and routes").
+    if (const auto& route = record.request.header.route; decoded && !(route == protocol::Route{}))
+        out["route"] = {{"network", devicemodel::hex2(route.network)},
+                        {"station", devicemodel::hex2(route.station)},
+                        {"module_io", devicemodel::hex4(route.module_io)},
+                        {"multidrop", devicemodel::hex2(route.multidrop)}};
     if (auto devices = decoded ? request_devices(record.request, numbering) : std::nullopt) {
         out["device"] = devices->device;
         out["points"] = devices->points;

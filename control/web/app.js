@@ -369,7 +369,9 @@ function addCall(call) {
   const devices = call.device ? `${call.device} ×${call.points} ${call.unit}` : (call.named || '');
   const endCode = call.end_code ?? (call.reaction === 'closed' ? 'closed' : 'no answer');
   const ok = call.end_code === (frontEnd ? '00' : '0000');
-  addCallRow([call.time.slice(11, 23), call.peer, command, devices, endCode, `${call.latency_us.toFixed(1)} µs`, call.note],
+  // A request a module's port passed on names the route it came by (network, station No.).
+  const peer = call.route ? `${call.peer} ⇢ net ${call.route.network} st ${call.route.station}` : call.peer;
+  addCallRow([call.time.slice(11, 23), peer, command, devices, endCode, `${call.latency_us.toFixed(1)} µs`, call.note],
     ok ? '' : 'error');
 }
 

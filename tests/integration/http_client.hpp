@@ -101,8 +101,10 @@ struct ServerEvent {
 // Subscribes to /api/events; the subscription is active once the constructor returns.
 class EventReader {
 public:
-    EventReader(std::uint16_t port, const std::string& query = "") : client_(TcpClient::open(port)) {
-        REQUIRE(client_.send("GET /api/events" + query + " HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n"));
+    // `path`: another station's stream in a plant ("/api/stations/press/events").
+    EventReader(std::uint16_t port, const std::string& query = "", const std::string& path = "/api/events")
+        : client_(TcpClient::open(port)) {
+        REQUIRE(client_.send("GET " + path + query + " HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n"));
         // The server subscribes before it writes the header and its opening comment.
         while (detail::parse_head(buffer_, &head_) == std::string::npos || buffer_.find("\n\n", buffer_.find("\r\n\r\n") + 4) == std::string::npos) {
             auto got = client_.recv_some(kReplyTimeout);

@@ -1,13 +1,20 @@
 // A plant's networks over HTTP (docs/api.md, "Plants"): GET /api/networks says
 // which station is which station No. on which network and who relays between
-// networks; GET /api/stations gives each station's network modules.
+// networks; GET /api/stations gives each station's network modules; a routed
+// request's event names its route.
 #include <catch2/catch.hpp>
 
+#include "ask.hpp"
+#include "frames.hpp"
 #include "http_client.hpp"
+#include "plant_ports.hpp"
+#include "protocol/client_commands.hpp"
 #include "sim_process.hpp"
+#include "sockets.hpp"
 
 using namespace slmp::test;
 using nlohmann::json;
+namespace client = slmp::protocol::client;
 
 TEST_CASE("GET /api/networks and /api/stations show the plant's networks and who relays to whom", "[route][plant][http]") {
     SimOptions options;
@@ -39,4 +46,32 @@ TEST_CASE("GET /api/networks and /api/stations show the plant's networks and who
     CHECK(list[0]["networks"] == json::parse(R"([{"number": 1, "station": 1, "master": false}])"));
     CHECK(list[4]["name"] == "island");
     CHECK(list[4]["networks"] == json::array());
+}
+
+TEST_CASE("a request routed through the Ethernet module shows its route in the target's request event", "[route][plant][http][events]") {
+    SimOptions options;
+    options.plant = true;
+    options.config_json = R"({"bind": "127.0.0.1", "http": {"port": 0}, "stations": [
+        {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "networks": [{"number": 1, "station": 1}]},
+        {"name": "press", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 2}]}]})";
+    SimProcess sim(options);
+    EventReader events(sim.http_port(), "", "/api/stations/press/events");
+
+    client::FrameOptions routed;
+    routed.route = slmp::protocol::Route{0x01, 0x02, 0x03FF, 0x00};
+    auto gw = TcpClient::open(tcp_of(sim, "gw"));
+    const auto answer = ask(gw, client::read_words(routed, addr("D100"), 1));
+    REQUIRE(answer.size() == 13);
+    CHECK(answer[9] == 0x00);   // end code 0000
+    CHECK(answer[10] == 0x00);
+
+    auto call = events.next_of("request").data;
+    CHECK(call["command"] == "0401");
+    CHECK(call["device"] == "D100");
+    CHECK(call["route"] == json::parse(R"({"network": "01", "station": "02", "module_io": "03FF", "multidrop": "00"})"));
+
+    // A request to press's own port names no route.
+    auto press = TcpClient::open(tcp_of(sim, "press"));
+    ask(press, client::read_words(client::FrameOptions{}, addr("D100"), 1));
+    CHECK_FALSE(events.next_of("request").data.contains("route"));
 }
