@@ -20,23 +20,26 @@ namespace slmp::protocol {
 constexpr std::uint64_t kUdpOwnerBit = std::uint64_t{1} << 63;
 constexpr std::uint64_t kUdpHashedBit = std::uint64_t{1} << 62;   // an IPv6 peer: hashed, not decodable
 
-inline std::uint64_t lock_owner(const Peer& peer, std::uint64_t session_id) {
-    if (peer.transport == Transport::Tcp) return session_id;
-    in_addr v4{};
-    if (inet_pton(AF_INET, peer.address.c_str(), &v4) == 1)
-        return kUdpOwnerBit | (std::uint64_t{ntohl(v4.s_addr)} << 16) | peer.port;
-    auto hashed = std::hash<std::string>{}(peer.endpoint());
-    return kUdpOwnerBit | kUdpHashedBit | (hashed & (kUdpHashedBit - 1));
-}
-
 // The sender's IPv4 address as octets (Status Read2 0E53 compares it with
-// the node's partner); 0.0.0.0 when the peer is not IPv4.
+// the node's partner; a UDP peer's lock owner is made of it); 0.0.0.0 when the
+// peer is not IPv4. Taken once where the Peer was made; parsed from the text
+// for a Peer made without it (a test's).
 inline std::array<std::uint8_t, 4> peer_ipv4(const Peer& peer) {
+    if (peer.ipv4 != std::array<std::uint8_t, 4>{}) return peer.ipv4;
     in_addr v4{};
     if (inet_pton(AF_INET, peer.address.c_str(), &v4) != 1) return {};
     const auto host = ntohl(v4.s_addr);
     return {static_cast<std::uint8_t>(host >> 24), static_cast<std::uint8_t>(host >> 16),
             static_cast<std::uint8_t>(host >> 8), static_cast<std::uint8_t>(host)};
+}
+
+inline std::uint64_t lock_owner(const Peer& peer, std::uint64_t session_id) {
+    if (peer.transport == Transport::Tcp) return session_id;
+    if (const auto v4 = peer_ipv4(peer); v4 != std::array<std::uint8_t, 4>{})
+        return kUdpOwnerBit | std::uint64_t{v4[0]} << 40 | std::uint64_t{v4[1]} << 32 | std::uint64_t{v4[2]} << 24 |
+               std::uint64_t{v4[3]} << 16 | peer.port;
+    auto hashed = std::hash<std::string>{}(peer.endpoint());
+    return kUdpOwnerBit | kUdpHashedBit | (hashed & (kUdpHashedBit - 1));
 }
 
 // "udp:127.0.0.1:50312" for an IPv4 UDP owner; nullopt for a connection's id.

@@ -25,6 +25,7 @@ protocol::Peer accepted_peer(station::StrandSocket& socket) {
     } else {
         peer.address = remote.address().to_string();
         peer.port = remote.port();
+        if (remote.address().is_v4()) peer.ipv4 = remote.address().to_v4().to_bytes();
     }
     peer.local_port = socket.local_endpoint(ec).port();
     socket.set_option(boost::asio::ip::tcp::no_delay(true), ec);

@@ -96,7 +96,9 @@ station::StrandTask<> UdpListener::relay_later(station::Handled pending, std::ve
 }
 
 protocol::Peer UdpListener::peer_of(const udp::endpoint& sender) const {
-    return {protocol::Transport::Udp, sender.address().to_string(), sender.port(), port_};
+    protocol::Peer peer{protocol::Transport::Udp, sender.address().to_string(), sender.port(), port_};
+    if (sender.address().is_v4()) peer.ipv4 = sender.address().to_v4().to_bytes();
+    return peer;
 }
 
 std::optional<station::Handled> UdpListener::answer_now(std::span<const std::uint8_t> input, const udp::endpoint& sender,
@@ -152,7 +154,7 @@ void UdpListener::restart_session() {
 void UdpListener::push_targets(std::vector<station::PushTarget>& targets) {
     for (const auto& entry : peers_) {
         const auto& to = entry.first;
-        const protocol::Peer peer{protocol::Transport::Udp, to.address().to_string(), to.port(), port_};
+        const auto peer = peer_of(to);
         targets.push_back({session_.id, peer, entry.second.kind, entry.second.codec, [this, to](std::vector<std::uint8_t> bytes) {
                                auto data = std::make_shared<std::vector<std::uint8_t>>(std::move(bytes));
                                socket_.async_send_to(asio::buffer(*data), to, [data](const boost::system::error_code&, std::size_t) {});
