@@ -1,6 +1,7 @@
 // A protocol face of a station, as a plug-in (docs/architecture.md, "Where to
-// add … a front end"): another controller's protocol served on the same CPU
-// memory — the Ladder Motion host link, the Sharp JW-51CM computer link.
+// add … a front end"): a protocol served on the station's CPU memory — SLMP,
+// the MELSEC CPU's own (frontends/slmp/), and other controllers' served on the
+// same memory: the Ladder Motion host link, the Sharp JW-51CM computer link.
 // The core (config, station, control, scenarios, server) reaches a face only
 // through these two classes and the registry (frontends/registry.cpp, one
 // line a face), as libmodbus's core reaches a transport only through its
@@ -16,8 +17,11 @@
 //   (new_session()), its address names for the HTTP API (resolve_name()) and
 //   its state beyond device memory for snapshots (save()/restore()).
 //
-// The transports wrap every call in a station::FrontEndCall (faults,
-// recording, activity); a face knows no sockets and no scenarios.
+// The transports serve every face alike (server/listeners.hpp): a face's ports,
+// each with the inbox its unit asks for — the station's timed path for a
+// timed unit (SLMP), else an at-once one that wraps every call in a
+// station::FrontEndCall (faults, recording, activity). A face knows no
+// sockets, no scenarios and no station.
 #pragma once
 
 #include <cstdint>
@@ -88,6 +92,15 @@ public:
     virtual ~Unit() = default;
     virtual const Face& face() const = 0;
 
+    // Whether the station decides when this unit's requests are served — at
+    // once, at the END of the scan or at the modelled time (its timing mode,
+    // docs/timing.md) — and serves them on its own path (station/inbox.hpp:
+    // the request decoded once, relays, the upstream, Ondemand pushes). The
+    // transports then hand the station the unit's bytes and call neither
+    // stream() nor datagram(). False: the unit answers each request at once
+    // through stream()/datagram(), in every timing mode.
+    virtual bool timed() const { return false; }
+
     // A new connection's state (null: the face keeps none).
     virtual std::unique_ptr<SessionState> new_session() { return nullptr; }
     // The front of a stream's buffered bytes: one request cut and answered, or need_more.
@@ -125,6 +138,7 @@ struct ApiRoute {
 struct Settings {
     const Face* face = nullptr;
     std::optional<config::PortConfig> tcp, udp;   // absent: no such port
+    std::vector<config::PortConfig> ports;        // and any number more, either transport (SLMP: the station's "ports")
     std::string serial_path;                      // also on a pseudo-terminal linked here (empty: none)
     std::shared_ptr<void> options;                // the face's own (memory map, codes, sizes)
 };
@@ -140,9 +154,18 @@ public:
     virtual std::string_view title() const = 0;      // "Ladder Motion host link" (the start-up log line)
     virtual std::string_view log_name() const = 0;   // "host link" (a session's log lines)
     virtual std::string_view port_name() const = 0;  // "host-link" ("cannot listen on the host-link TCP port")
+    // Its port in "cannot listen on <this> 127.0.0.1:9600": "the host-link TCP port".
+    virtual std::string port_noun(config::Transport transport) const {
+        return "the " + std::string(port_name()) + (transport == config::Transport::Tcp ? " TCP port" : " UDP port");
+    }
     // The fix named when its port cannot be had: "\"hostlink\": {\"tcp_port\": ...} or --hostlink-port".
     virtual std::string port_fix(config::Transport transport) const = 0;
     virtual bool has_udp() const { return false; }   // ready file: {"tcp", "udp"} instead of a TCP list
+    // Whether it is configured by a JSON section and options of its own, named
+    // by name() (faces() lists these). False: by the station's own keys —
+    // SLMP's ports are the station's "ports", --tcp-port and --udp-port
+    // (config::ServerConfig::ports) — and served when they name any.
+    virtual bool own_section() const { return true; }
 
     // The station "kind" that serves this face alone ("ladder-motion"; empty: none),
     // what such a station lacks of it ("host-link port": "a sharp-jw station has no
@@ -176,9 +199,14 @@ public:
     virtual std::span<const ApiRoute> api_routes() const { return {}; }
 };
 
-// The registered faces, in registration order (frontends/registry.cpp).
+// Every registered face, in registration order (frontends/registry.cpp): what
+// a station may serve.
+const std::vector<const Face*>& all_faces();
+// Those configured by a section of their own (Face::own_section): the
+// configuration's sections, options, scenario protocols and metrics names
+// beside SLMP's. In registration order.
 const std::vector<const Face*>& faces();
-const Face* find_face(std::string_view name);
+const Face* find_face(std::string_view name);   // any registered face
 // For a test's own face: registered after the built-in ones, for the process's life.
 void register_face(const Face& face);
 // The faces' names quoted for a fix, after `first` when given: "\"slmp\", \"a\" or \"b\"".

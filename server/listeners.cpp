@@ -1,26 +1,31 @@
 #include "server/listeners.hpp"
 
-#include "station/face_inbox.hpp"
-
 namespace slmp::server {
+
+namespace {
+
+// A face's settings as the station serves them: a face configured by the
+// station's own keys (Face::own_section false: SLMP) on `config`'s ports,
+// when it names any; another as its section or options turned it on.
+std::vector<frontends::Settings> served_faces(const config::ServerConfig& config, const config::FrontEndsConfig& frontends) {
+    std::vector<frontends::Settings> list;
+    for (const auto* face : frontends::all_faces()) {
+        if (face->own_section()) {
+            if (const auto* settings = frontends.find(face->name())) list.push_back(*settings);
+        } else if (!config.ports.empty()) {
+            auto settings = face->defaults();
+            settings.ports = config.ports;
+            list.push_back(std::move(settings));
+        }
+    }
+    return list;
+}
+
+}  // namespace
 
 Listeners::Listeners(const station::Home& home, station::Station& station, const config::ServerConfig& config,
                      const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind, bool shared_loop) {
-    for (const auto& port : config.ports) {
-        try {
-            if (port.transport == config::Transport::Tcp)
-                tcp_.push_back(std::make_unique<TcpListener>(home, station, port, bind, shared_loop));
-            else
-                udp_.push_back(std::make_unique<UdpListener>(home, station, port, bind));
-        } catch (const boost::system::system_error& e) {
-            auto transport = port.transport == config::Transport::Tcp ? "TCP" : "UDP";
-            throw config::ConfigError(std::string("cannot listen on ") + transport + " " + config.bind + ":" +
-                                      std::to_string(port.port) + ": " + e.code().message() +
-                                      "; choose another port (--" + (port.transport == config::Transport::Tcp ? "tcp" : "udp") +
-                                      "-port) or stop the program using it");
-        }
-    }
-    for (const auto& face : frontends.faces) listen_face(home, station, config, face, bind);
+    for (const auto& settings : served_faces(config, frontends)) listen_face(home, station, config, settings, bind, shared_loop);
     if (!faces_.empty()) {
         station_ = &station;
         station::Station::FrontEnds units;
@@ -30,68 +35,49 @@ Listeners::Listeners(const station::Home& home, station::Station& station, const
 }
 
 void Listeners::listen_face(const station::Home& home, station::Station& station, const config::ServerConfig& config,
-                            const frontends::Settings& settings, const boost::asio::ip::address& bind) {
+                            const frontends::Settings& settings, const boost::asio::ip::address& bind, bool shared_loop) {
     const auto& face = *settings.face;
     if (auto problem = face.check(station.cpu(), settings); !problem.empty()) throw config::ConfigError(problem);
     auto& served = faces_.emplace_back();
     served.unit = face.make_unit(station.cpu(), settings);
-    auto* unit = served.unit.get();
-    auto fail = [&](config::Transport transport, std::uint16_t port, const boost::system::system_error& e) {
-        return config::ConfigError("cannot listen on the " + std::string(face.port_name()) + " " +
-                                   (transport == config::Transport::Tcp ? "TCP" : "UDP") + " port " + config.bind + ":" +
-                                   std::to_string(port) + ": " + e.code().message() + "; choose another port (" +
-                                   face.port_fix(transport) + ") or stop the program using it");
-    };
-    if (settings.tcp) {
-        InboxMaker face_inbox = [&station, unit](const protocol::Peer& peer, station::Feed*) {
-            return std::make_unique<station::FaceInbox>(station, *unit, peer);
-        };
+    auto& unit = *served.unit;
+    std::vector<config::PortConfig> ports;
+    if (settings.tcp) ports.push_back(*settings.tcp);
+    if (settings.udp) ports.push_back(*settings.udp);
+    ports.insert(ports.end(), settings.ports.begin(), settings.ports.end());
+    for (const auto& port : ports) {
         try {
-            served.tcp = std::make_unique<TcpListener>(home, station, *settings.tcp, bind, false, std::move(face_inbox),
-                                                       std::string(face.log_name()));
+            if (port.transport == config::Transport::Tcp)
+                served.tcp.push_back(std::make_unique<TcpListener>(home, station, unit, port, bind, shared_loop));
+            else
+                served.udp.push_back(std::make_unique<UdpListener>(home, station, unit, port, bind));
         } catch (const boost::system::system_error& e) {
-            throw fail(config::Transport::Tcp, settings.tcp->port, e);
+            throw config::ConfigError("cannot listen on " + face.port_noun(port.transport) + " " + config.bind + ":" +
+                                      std::to_string(port.port) + ": " + e.code().message() + "; choose another port (" +
+                                      face.port_fix(port.transport) + ") or stop the program using it");
         }
     }
-    if (settings.udp) {
-        try {
-            served.udp = std::make_unique<UdpListener>(home, station, *settings.udp, bind, unit);
-        } catch (const boost::system::system_error& e) {
-            throw fail(config::Transport::Udp, settings.udp->port, e);
-        }
-    }
-    if (!settings.serial_path.empty()) serial_ = std::make_unique<SerialPort>(home, *unit, settings.serial_path);
+    if (!settings.serial_path.empty()) serial_ = std::make_unique<SerialPort>(home, unit, settings.serial_path);
 }
 
-const Listeners::Served* Listeners::served(std::string_view face) const {
-    for (const auto& f : faces_)
-        if (f.unit->face().name() == face) return &f;
-    return nullptr;
-}
-
-std::vector<std::uint16_t> Listeners::face_tcp_ports(std::string_view face) const {
-    const auto* f = served(face);
-    if (!f || !f->tcp) return {};
-    return {f->tcp->port()};
-}
-
-std::vector<std::uint16_t> Listeners::face_udp_ports(std::string_view face) const {
-    const auto* f = served(face);
-    if (!f || !f->udp) return {};
-    return {f->udp->port()};
-}
-
-std::vector<std::uint16_t> Listeners::tcp_ports() const {
+// `face`'s ports, or (empty `face`) those of the faces whose `own_section` is as given.
+std::vector<std::uint16_t> Listeners::ports_of(std::string_view face, bool tcp, bool own_section) const {
     std::vector<std::uint16_t> ports;
-    for (const auto& l : tcp_) ports.push_back(l->port());
+    for (const auto& f : faces_) {
+        const auto& kind = f.unit->face();
+        if (face.empty() ? kind.own_section() != own_section : kind.name() != face) continue;
+        if (tcp)
+            for (const auto& l : f.tcp) ports.push_back(l->port());
+        else
+            for (const auto& l : f.udp) ports.push_back(l->port());
+    }
     return ports;
 }
 
-std::vector<std::uint16_t> Listeners::udp_ports() const {
-    std::vector<std::uint16_t> ports;
-    for (const auto& l : udp_) ports.push_back(l->port());
-    return ports;
-}
+std::vector<std::uint16_t> Listeners::face_tcp_ports(std::string_view face) const { return ports_of(face, true, true); }
+std::vector<std::uint16_t> Listeners::face_udp_ports(std::string_view face) const { return ports_of(face, false, true); }
+std::vector<std::uint16_t> Listeners::tcp_ports() const { return ports_of({}, true, false); }
+std::vector<std::uint16_t> Listeners::udp_ports() const { return ports_of({}, false, false); }
 
 Listeners::~Listeners() {
     // The front ends go with the listeners: the station must not reach them after.
@@ -99,29 +85,29 @@ Listeners::~Listeners() {
 }
 
 void Listeners::stop() {
-    for (auto& l : tcp_) l->stop();
-    for (auto& l : udp_) l->stop();
     for (auto& f : faces_) {
-        if (f.tcp) f.tcp->stop();
-        if (f.udp) f.udp->stop();
+        for (auto& l : f.tcp) l->stop();
+        for (auto& l : f.udp) l->stop();
     }
     if (serial_) serial_->stop();
 }
 
 void Listeners::refuse_connections(bool refusing) {
-    for (auto& l : tcp_) l->set_refusing(refusing);
     for (auto& f : faces_)
-        if (f.tcp) f.tcp->set_refusing(refusing);
+        for (auto& l : f.tcp) l->set_refusing(refusing);
 }
 
 void Listeners::restart_sessions() {
-    for (auto& l : udp_) l->restart_session();
+    for (auto& f : faces_)
+        for (auto& l : f.udp) l->restart_session();
 }
 
 std::vector<station::PushTarget> Listeners::push_targets() {
     std::vector<station::PushTarget> targets;
-    for (auto& l : tcp_) l->push_targets(targets);
-    for (auto& l : udp_) l->push_targets(targets);
+    for (auto& f : faces_) {
+        for (auto& l : f.tcp) l->push_targets(targets);
+        for (auto& l : f.udp) l->push_targets(targets);
+    }
     return targets;
 }
 

@@ -1,7 +1,9 @@
-// The ports of one station: a TcpListener or UdpListener per configured SLMP
-// port, and the ports of each protocol face it serves (frontends/face.hpp: a
-// face's unit answers on the same CPU memory), bound at construction. They are the station's Transports, so a
-// scenario's power cut closes the TCP ports and a restarted CPU gives UDP
+// The ports of one station: for each protocol face it serves (frontends/face.hpp:
+// SLMP on the station's "ports", the host link, the JW-51CM computer link),
+// the face's unit on the CPU's memory and a TcpListener or UdpListener per
+// port of the face, bound at construction; each connection gets the inbox the
+// unit asks for (station/face_inbox.hpp). They are the station's Transports,
+// so a scenario's power cut closes the TCP ports and a restarted CPU gives UDP
 // clients fresh sessions.
 #pragma once
 
@@ -25,8 +27,10 @@ namespace slmp::server {
 
 class Listeners final : public station::Transports {
 public:
-    // Binds every port of `config` on `bind`; throws config::ConfigError naming
-    // the port and the fix when one cannot be had. `shared_loop`: the home's
+    // Binds every port of every face the station serves on `bind`: the
+    // faces configured by the station's own keys on `config`'s ports (SLMP),
+    // the others as `frontends` says. Throws config::ConfigError naming the
+    // port and the fix when one cannot be had. `shared_loop`: the home's
     // io_context is run by several threads (server/server.hpp).
     Listeners(const station::Home& home, station::Station& station, const config::ServerConfig& config,
               const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind, bool shared_loop = false);
@@ -34,7 +38,9 @@ public:
     Listeners(const Listeners&) = delete;
     Listeners& operator=(const Listeners&) = delete;
 
-    std::vector<std::uint16_t> tcp_ports() const;   // bound ports, also when 0 was asked for
+    // The bound ports of the faces on the station's own "ports" (SLMP), also
+    // when 0 was asked for.
+    std::vector<std::uint16_t> tcp_ports() const;
     std::vector<std::uint16_t> udp_ports() const;
     // A face's bound ports (empty when the station does not serve it, or it has no such port).
     std::vector<std::uint16_t> face_tcp_ports(std::string_view face) const;
@@ -50,17 +56,15 @@ private:
     // One face: its unit, and its TCP/UDP ports and serial line as its settings say.
     struct Served {
         std::unique_ptr<frontends::Unit> unit;
-        std::unique_ptr<TcpListener> tcp;
-        std::unique_ptr<UdpListener> udp;
+        std::vector<std::unique_ptr<TcpListener>> tcp;
+        std::vector<std::unique_ptr<UdpListener>> udp;
     };
     void listen_face(const station::Home& home, station::Station& station, const config::ServerConfig& config,
-                     const frontends::Settings& settings, const boost::asio::ip::address& bind);
-    const Served* served(std::string_view face) const;
+                     const frontends::Settings& settings, const boost::asio::ip::address& bind, bool shared_loop);
+    std::vector<std::uint16_t> ports_of(std::string_view face, bool tcp, bool own_section) const;
 
     station::Station* station_ = nullptr;   // whose frontends() name ours (cleared on destruction)
-    std::vector<std::unique_ptr<TcpListener>> tcp_;
-    std::vector<std::unique_ptr<UdpListener>> udp_;
-    std::vector<Served> faces_;
+    std::vector<Served> faces_;             // in registration order (frontends/registry.cpp)
     std::unique_ptr<SerialPort> serial_;
 };
 

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "station/face_inbox.hpp"
 #include "station/log_exception.hpp"
 
 namespace slmp::server {
@@ -9,25 +10,27 @@ namespace slmp::server {
 namespace asio = boost::asio;
 using asio::ip::tcp;
 
-TcpListener::TcpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
-                         const asio::ip::address& bind, bool shared_loop, InboxMaker face_inbox, std::string face)
+TcpListener::TcpListener(const station::Home& home, station::Station& station, frontends::Unit& unit,
+                         const config::PortConfig& port, const asio::ip::address& bind, bool shared_loop)
     : home_(home),
       station_(station),
       config_(port),
       endpoint_(bind, port.port),
       acceptor_(home),
-      make_inbox_(std::move(face_inbox)),
-      face_(std::move(face)) {
+      face_(unit.face().log_name()) {
     if (!config_.max_connections) config_.max_connections = station.engine().port().max_connections;
-    // On a loop that several threads run, an SLMP connection in the instant
-    // timing mode reads, frames and writes on a strand of its own, so the
-    // threads serve one busy station together; its requests are still served
-    // one at a time on the station's strand. On a loop of one thread a strand
-    // of its own would only add a hand-over a request. The timing modes' waits
-    // and another face's inbox touch the station throughout: those connections
+    // On a loop that several threads run, a timed unit's connection (SLMP) in
+    // the instant timing mode reads, frames and writes on a strand of its own,
+    // so the threads serve one busy station together: its inbox hops to the
+    // station's strand for each read's requests (station/inbox.hpp), which
+    // are still served one at a time. On a loop of one thread a strand of its
+    // own would only add a hand-over a request. The timing modes' waits and an
+    // at-once face's inbox touch the station throughout: those connections
     // stay on the station's strand.
-    own_strands_ = shared_loop && !make_inbox_ && station.timing_mode() == config::TimingMode::Instant;
-    if (!make_inbox_) make_inbox_ = slmp_inbox(home_, station_, config_, [this] { return sessions_.size(); });
+    own_strands_ = shared_loop && unit.timed() && station.serves_at_once();
+    make_inbox_ = [this, &unit, policy = to_policy(port.data_code)](const protocol::Peer& peer, station::Feed* feed) {
+        return station::connection_inbox(station_, home_, unit, config_, policy, peer, feed, [this] { return sessions_.size(); });
+    };
     listen();   // throws boost::system::system_error when the port cannot be had
     endpoint_ = acceptor_.local_endpoint();
 }
@@ -123,7 +126,7 @@ void TcpListener::stop() {
 }
 
 void TcpListener::push_targets(std::vector<station::PushTarget>& targets) {
-    // Ondemand pushes are SLMP frames: another face's connections take none.
+    // Only connections whose inbox takes pushes (SLMP's) are targets.
     for (auto& entry : sessions_)
         if (auto target = entry.second->push_target()) targets.push_back(std::move(*target));
 }

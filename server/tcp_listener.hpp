@@ -13,6 +13,7 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
+#include "frontends/face.hpp"
 #include "server/tcp_session.hpp"
 #include "station/station.hpp"
 
@@ -20,12 +21,11 @@ namespace slmp::server {
 
 class TcpListener {
 public:
-    // Serves SLMP unless `face_inbox` makes another face's inboxes (`face`:
-    // its log name, server/tcp_session.hpp). `shared_loop`: several threads
-    // run the home's io_context (server/listeners.hpp).
-    TcpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
-                const boost::asio::ip::address& bind, bool shared_loop = false, InboxMaker face_inbox = {},
-                std::string face = {});
+    // Serves `unit`'s face: each connection gets the inbox the unit asks for
+    // (station/face_inbox.hpp). `shared_loop`: several threads run the home's
+    // io_context (server/listeners.hpp).
+    TcpListener(const station::Home& home, station::Station& station, frontends::Unit& unit, const config::PortConfig& port,
+                const boost::asio::ip::address& bind, bool shared_loop = false);
 
     std::uint16_t port() const { return endpoint_.port(); }   // the bound port, also when 0 was asked for
     void stop();
@@ -48,10 +48,10 @@ private:
     boost::asio::ip::tcp::endpoint endpoint_;
     boost::asio::ip::tcp::acceptor acceptor_;
     InboxMaker make_inbox_;
-    std::string face_;
+    std::string face_;   // its log name (empty: none, SLMP)
     std::unordered_map<TcpSession*, std::shared_ptr<TcpSession>> sessions_;
     std::unordered_map<std::string, unsigned> sessions_per_address_;   // only with a per-address cap
-    bool own_strands_ = false;   // SLMP sessions in instant mode read and write on strands of their own
+    bool own_strands_ = false;   // a timed unit's sessions in instant mode read and write on strands of their own
     bool stopping_ = false;
     bool refusing_ = false;
 };

@@ -58,15 +58,6 @@ protocol::DataCodePolicy to_policy(config::DataCode code) {
     return protocol::DataCodePolicy::Auto;
 }
 
-InboxMaker slmp_inbox(station::Home home, station::Station& station, const config::PortConfig& port,
-                      std::function<std::size_t()> connections) {
-    return [home = std::move(home), &station, port, connections = std::move(connections)](const protocol::Peer& peer,
-                                                                                          station::Feed* feed) {
-        return std::make_unique<station::Inbox>(station, home, station.new_session(port), peer, to_policy(port.data_code),
-                                                feed, connections);
-    };
-}
-
 TcpSession::TcpSession(station::StrandSocket socket, station::Home home, station::Station& station,
                        const config::PortConfig& port, std::function<void(TcpSession*)> on_closed,
                        const InboxMaker& make_inbox, std::string face)
@@ -80,7 +71,6 @@ TcpSession::TcpSession(station::StrandSocket socket, station::Home home, station
       on_closed_(std::move(on_closed)) {
     peer_ = accepted_peer(socket_);
     inbox_ = make_inbox(peer_, &feed_);
-    slmp_ = dynamic_cast<station::Inbox*>(inbox_.get());
 }
 
 std::string TcpSession::who() const {
@@ -119,10 +109,10 @@ void TcpSession::close_now() {
 }
 
 std::optional<station::PushTarget> TcpSession::push_target() {
-    if (!slmp_) return std::nullopt;   // Ondemand pushes are SLMP frames
+    const auto shape = inbox_->push_shape();
+    if (!shape) return std::nullopt;   // its face takes no Ondemand pushes
     std::weak_ptr<TcpSession> weak = shared_from_this();
-    const auto shape = slmp_->last_shape();
-    return station::PushTarget{slmp_->connection(), peer_, shape.kind, shape.codec, [weak](std::vector<std::uint8_t> bytes) {
+    return station::PushTarget{inbox_->connection(), peer_, shape->kind, shape->codec, [weak](std::vector<std::uint8_t> bytes) {
                                    if (auto session = weak.lock()) session->push(std::move(bytes));
                                }};
 }

@@ -1,7 +1,7 @@
 // One TCP connection, whatever face it speaks: it reads bytes into its inbox,
-// which cuts requests from the stream and has the station serve them (SLMP:
-// when its timing mode says, station/inbox.hpp; another face: at once,
-// station/face_inbox.hpp), and writes the answers. A request
+// which cuts requests from the stream and has the station serve them (a timed
+// unit's, SLMP's: when the timing mode says, station/inbox.hpp; another
+// face's: at once, station/face_inbox.hpp), and writes the answers. A request
 // split over many segments is assembled and several requests in one segment
 // are all answered, in order. A watchdog closes silent connections
 // (idle timeout) and connections whose started frame stays incomplete
@@ -35,18 +35,15 @@ namespace slmp::server {
 
 class Outbox;
 
-// Makes a connection's inbox once its peer is known; `feed` is the
-// connection's further bytes while an SLMP inbox waits on the clock.
+// Makes a connection's inbox once its peer is known (station::connection_inbox);
+// `feed` is the connection's further bytes while a timed inbox waits on the clock.
 using InboxMaker =
     std::function<std::unique_ptr<station::ConnectionInbox>(const protocol::Peer& peer, station::Feed* feed)>;
-// An SLMP port's.
-InboxMaker slmp_inbox(station::Home home, station::Station& station, const config::PortConfig& port,
-                      std::function<std::size_t()> connections);
 
 class TcpSession final : public std::enable_shared_from_this<TcpSession> {
 public:
     // Called on the station's home strand (the listener's accept loop).
-    // `face`: the face's log name before its log lines ("host link"; empty: SLMP).
+    // `face`: the face's log name before its log lines ("host link"; empty: none).
     TcpSession(station::StrandSocket socket, station::Home home, station::Station& station,
                const config::PortConfig& port, std::function<void(TcpSession*)> on_closed, const InboxMaker& make_inbox,
                std::string face = {});
@@ -56,7 +53,7 @@ public:
     // Remote RESET (`why` is logged).
     void close(const std::string& why = {});
     const protocol::Peer& peer() const { return peer_; }
-    // Ondemand: this connection as a push target (none when it is not SLMP);
+    // Ondemand: this connection as a push target (none when its inbox takes no pushes);
     // its send() queues the bytes behind the responses already on their way
     // and wakes the session's read.
     std::optional<station::PushTarget> push_target();
@@ -91,7 +88,6 @@ private:
     bool sending_ = false;                      // serve() is writing (the watchdog waits meanwhile)
     SocketFeed feed_{socket_};   // the inbox's further bytes while it waits on the clock
     std::unique_ptr<station::ConnectionInbox> inbox_;   // received bytes and how they are served
-    station::Inbox* slmp_ = nullptr;                    // inbox_ when it is SLMP's (pushes take its last shape)
 };
 
 protocol::DataCodePolicy to_policy(config::DataCode code);

@@ -18,24 +18,26 @@ constexpr std::size_t kMaxPushPeers = 256;   // UDP peers an Ondemand push reach
 // station's other work (the scan, the API, its TCP connections) run.
 constexpr int kDatagramsPerTurn = 16;
 
-UdpListener::UdpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
-                         const asio::ip::address& bind, frontends::Unit* face)
+UdpListener::UdpListener(const station::Home& home, station::Station& station, frontends::Unit& unit,
+                         const config::PortConfig& port, const asio::ip::address& bind)
     : station_(station),
-      face_(face),
+      unit_(unit),
       policy_(to_policy(port.data_code)),
       config_(port),
       session_(station.new_session(port)),
       socket_(home, udp::endpoint(bind, port.port)) {
     port_ = socket_.local_endpoint().port();
     socket_.non_blocking(true);   // a waiting datagram is read, and an answer sent, without an asynchronous operation
-    const auto name = face_ ? std::string(face_->face().log_name()) + " UDP port " : std::string("UDP port ");
+    const auto log_name = unit_.face().log_name();
+    const auto name = (log_name.empty() ? std::string() : std::string(log_name) + " ") + "UDP port ";
     asio::co_spawn(home, serve(), station::log_exception(name + std::to_string(port_) + ": receive loop failed"));
 }
 
 station::StrandTask<> UdpListener::serve() {
     std::array<std::uint8_t, 65536> datagram;
     udp::endpoint sender;
-    const bool at_once = face_ || station_.serves_at_once();
+    const bool timed = unit_.timed();
+    const bool at_once = !timed || station_.serves_at_once();
     int turn = 0;   // datagrams served since the last asynchronous receive
     while (socket_.is_open()) {
         boost::system::error_code ec;
@@ -55,7 +57,7 @@ station::StrandTask<> UdpListener::serve() {
             continue;
         }
         auto input = std::span<const std::uint8_t>(datagram.data(), n);
-        if (face_) {
+        if (!timed) {
             if (auto later = face_answer(input, peer_of(sender))) co_await send_later(sender, std::move(*later));
             continue;
         }
@@ -129,9 +131,9 @@ std::optional<station::Handled> UdpListener::answer_now(std::span<const std::uin
 
 std::optional<station::Handled> UdpListener::face_answer(std::span<const std::uint8_t> datagram,
                                                          const protocol::Peer& peer) {
-    auto [exchange, delivery] = station::call_face(station_, *face_, nullptr, session_.id, peer, datagram, true);
+    auto [exchange, delivery] = station::call_face(station_, unit_, nullptr, session_.id, peer, datagram, true);
     if (exchange.response.empty()) {
-        station_.log().debug("{} UDP {}: datagram of {} byte(s) not answered", face_->face().log_name(), peer.text(),
+        station_.log().debug("{} UDP {}: datagram of {} byte(s) not answered", unit_.face().log_name(), peer.text(),
                              datagram.size());
         return std::nullopt;
     }

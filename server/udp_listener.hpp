@@ -1,6 +1,8 @@
-// A UDP port, SLMP's or another face's (frontends/face.hpp: the JW-51CM
-// computer link): one datagram is one request, answered to the sender's
-// address and port. No connection, so one protocol session serves the port.
+// A UDP port of a face (frontends/face.hpp: SLMP, the JW-51CM computer link):
+// one datagram is one request, answered to the sender's address and port. No
+// connection, so one protocol session serves the port. A timed unit's
+// datagrams (SLMP's) the station serves when its timing mode says, each held
+// by itself meanwhile (station::HeldDatagram); another face's unit answers at once.
 #pragma once
 
 #include <array>
@@ -11,6 +13,7 @@
 #include "station/asio.hpp"
 
 #include "config/config.hpp"
+#include "frontends/face.hpp"
 #include "station/inbox.hpp"
 #include "station/station.hpp"
 
@@ -18,9 +21,9 @@ namespace slmp::server {
 
 class UdpListener {
 public:
-    // Serves SLMP unless `face` is given: then that face's unit answers, at once in every timing mode.
-    UdpListener(const station::Home& home, station::Station& station, const config::PortConfig& port,
-                const boost::asio::ip::address& bind, frontends::Unit* face = nullptr);
+    // Serves `unit`'s face.
+    UdpListener(const station::Home& home, station::Station& station, frontends::Unit& unit, const config::PortConfig& port,
+                const boost::asio::ip::address& bind);
 
     std::uint16_t port() const { return port_; }
     void stop();
@@ -47,11 +50,11 @@ private:
     // The answer answer_now() returned, sent as its delivery asks.
     station::StrandTask<> send_later(boost::asio::ip::udp::endpoint sender, station::Handled handled);
     protocol::Peer peer_of(const boost::asio::ip::udp::endpoint& sender) const;
-    // Another face's answer to one datagram (none: not answered).
+    // An at-once unit's answer to one datagram (none: not answered).
     std::optional<station::Handled> face_answer(std::span<const std::uint8_t> datagram, const protocol::Peer& peer);
 
     station::Station& station_;
-    frontends::Unit* face_;   // null: SLMP
+    frontends::Unit& unit_;
     protocol::DataCodePolicy policy_;
     config::PortConfig config_;   // its settings, for the sessions after a restart
     protocol::Session session_;

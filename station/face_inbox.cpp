@@ -15,6 +15,15 @@ FaceAnswer call_face(Station& station, frontends::Unit& unit, frontends::Session
     return answer;
 }
 
+std::unique_ptr<ConnectionInbox> connection_inbox(Station& station, const Home& home, frontends::Unit& unit,
+                                                  const config::PortConfig& port, protocol::DataCodePolicy policy,
+                                                  const protocol::Peer& peer, Feed* feed,
+                                                  std::function<std::size_t()> connections) {
+    if (unit.timed())
+        return std::make_unique<Inbox>(station, home, station.new_session(port), peer, policy, feed, std::move(connections));
+    return std::make_unique<FaceInbox>(station, unit, peer);
+}
+
 FaceInbox::FaceInbox(Station& station, frontends::Unit& unit, const protocol::Peer& peer)
     : station_(station), unit_(unit), state_(unit.new_session()), peer_(peer), id_(station.next_session_id()) {}
 

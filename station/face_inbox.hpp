@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -29,6 +30,14 @@ struct FaceAnswer {
 // `session`: the connection's state (null for a datagram, which `datagram` says).
 FaceAnswer call_face(Station& station, frontends::Unit& unit, frontends::SessionState* session, std::uint64_t connection,
                      const protocol::Peer& peer, std::span<const std::uint8_t> input, bool datagram);
+
+// A new stream connection's inbox on a port of `unit`'s: the station's timed
+// Inbox when the unit is timed (frontends::Unit::timed: SLMP), else a
+// FaceInbox. `port`: the port's settings; `feed` and `connections` as Inbox takes them.
+std::unique_ptr<ConnectionInbox> connection_inbox(Station& station, const Home& home, frontends::Unit& unit,
+                                                  const config::PortConfig& port, protocol::DataCodePolicy policy,
+                                                  const protocol::Peer& peer, Feed* feed,
+                                                  std::function<std::size_t()> connections);
 
 class FaceInbox final : public ConnectionInbox {
 public:

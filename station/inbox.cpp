@@ -5,6 +5,45 @@
 namespace slmp::station {
 
 using protocol::Outcome;
+using TimePoint = std::chrono::steady_clock::time_point;
+
+namespace {
+
+// A request still waiting for its END, as its holder sees it before each
+// wait: its deadline (its arrival plus its monitoring timer; none: it waits
+// for the END alone).
+struct Awaiting {
+    std::optional<TimePoint> deadline;
+};
+
+// Where an end_of_scan wait ended: at the END after it began (`served_at`:
+// that END's time), or not (its deadline passed or it no longer waits: now).
+struct EndOfScanWait {
+    bool at_end = false;
+    TimePoint served_at;
+};
+
+// end_of_scan (docs/timing.md): a whole request waits for the END after its
+// arrival, or until its monitoring timer runs out, whichever comes first —
+// the one wait of a stream's first request (Inbox) and of a datagram
+// (HeldDatagram). `awaiting` says before each wait whether a request still
+// waits (nullopt: none does — it is gone, the connection closed or the
+// station stopped) and its deadline; `wait_once` waits on the clock once, for
+// the END after `seen` or the deadline, whichever comes first.
+StrandTask<EndOfScanWait> wait_for_end(ScanLoop& scan, std::function<std::optional<Awaiting>()> awaiting,
+                                       std::function<StrandTask<>(std::uint64_t seen, std::optional<TimePoint> deadline)> wait_once) {
+    const auto seen = scan.scans();
+    for (;;) {
+        const auto request = awaiting();
+        if (!request) break;
+        if (scan.scans() > seen) co_return EndOfScanWait{true, scan.end_time(seen + 1)};
+        if (request->deadline && scan.clock().now() >= *request->deadline) break;
+        co_await wait_once(seen, request->deadline);
+    }
+    co_return EndOfScanWait{false, scan.clock().now()};
+}
+
+}  // namespace
 
 RequestShape request_shape(std::span<const std::uint8_t> f) {
     using protocol::Codec;
@@ -121,20 +160,18 @@ StrandTask<> Inbox::hold_for_clock() {
     bool at_end = false;
     auto served_at = scan.clock().now();
     if (end_of_scan) {
-        const auto seen = scan.scans();
-        for (;;) {
+        auto first_request = [this, &scan]() -> std::optional<Awaiting> {
             const auto first = station_.next_request(unserved(), policy_);
-            if (!first || scan.stopped() || !feed_->open()) break;
-            if (scan.scans() > seen) {
-                at_end = true;
-                break;
-            }
-            std::optional<TimePoint> deadline;
-            if (first->timer.count() > 0) deadline = arrival(consumed_ + first->end) + first->timer;
-            if (deadline && scan.clock().now() >= *deadline) break;
-            co_await wait(seen, deadline);
-        }
-        served_at = at_end ? scan.end_time(seen + 1) : scan.clock().now();
+            if (!first || scan.stopped() || !feed_->open()) return std::nullopt;
+            Awaiting request;
+            if (first->timer.count() > 0) request.deadline = arrival(consumed_ + first->end) + first->timer;
+            return request;
+        };
+        const auto waited = co_await wait_for_end(scan, first_request, [this](std::uint64_t seen, std::optional<TimePoint> at) {
+            return wait(seen, at);   // reading the connection on meanwhile
+        });
+        at_end = waited.at_end;
+        served_at = waited.served_at;
     }
     if (!feed_->open()) co_return;
     if (!held_) begin_frames();   // a held request resumes the turn it was scheduled in
@@ -234,14 +271,12 @@ StrandTask<bool> HeldDatagram::wait() {
     // end_of_scan: the END after the arrival, or the monitoring timer first.
     const auto queued = station_.next_request(ticket_.bytes, policy_);
     if (queued && queued->start == 0) {
-        const auto seen = scan.scans();
-        std::optional<std::chrono::steady_clock::time_point> deadline;
-        if (queued->timer.count() > 0) deadline = arrival_ + queued->timer;
-        while (scan.scans() <= seen && !scan.stopped() && !(deadline && scan.clock().now() >= *deadline))
-            co_await scan.until_end_or(seen, deadline);
-        const bool at_end = scan.scans() > seen;
-        end_of_scan_ = Station::end_of_scan_service(arrival_, queued->timer, at_end ? scan.end_time(seen + 1) : scan.clock().now(),
-                                                    at_end);
+        Awaiting request;
+        if (queued->timer.count() > 0) request.deadline = arrival_ + queued->timer;
+        const auto waited = co_await wait_for_end(
+            scan, [&scan, request]() -> std::optional<Awaiting> { return scan.stopped() ? std::nullopt : std::optional(request); },
+            [&scan](std::uint64_t seen, std::optional<TimePoint> at) { return scan.until_end_or(seen, at); });
+        end_of_scan_ = Station::end_of_scan_service(arrival_, queued->timer, waited.served_at, waited.at_end);
     }
     co_return !scan.stopped();
 }

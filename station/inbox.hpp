@@ -80,6 +80,9 @@ public:
     virtual bool waiting() const { return false; }
     // Bytes received and not served (a request still incomplete): for the watchdog.
     virtual std::size_t pending() const = 0;
+    // Ondemand pushes (docs/timing.md) reach the connection in this shape, its
+    // last request's; none: its face takes no pushes.
+    virtual std::optional<RequestShape> push_shape() const { return std::nullopt; }
 };
 
 // One SLMP stream connection's received bytes and how they are served. Lives
@@ -105,7 +108,7 @@ public:
     bool waiting() const override { return waiting_; }
     std::size_t pending() const override { return bytes_.size(); }
     // The last request's frame shape, for pushes.
-    RequestShape last_shape() const { return last_shape_; }
+    std::optional<RequestShape> push_shape() const override { return last_shape_; }
 
 private:
     using TimePoint = std::chrono::steady_clock::time_point;
