@@ -102,6 +102,25 @@ struct ModuleConfig {
 // With `station`, the module is on that network as that station No., so
 // requests routed through another station's module reach this CPU
 // (docs/plants.md, "Networks and routes").
+// One CPU of a redundant pair (docs/plants.md, "Redundant pairs"): the
+// partner station's name and this CPU's system (A or B). System A is the
+// control system at start; a system switch takes `switchover_ms` on the new
+// control system's clock (given on either CPU, or the same on both; default 100).
+struct RedundantConfig {
+    std::string pair;
+    char system = 'A';
+    std::optional<double> switchover_ms;
+};
+
+// A multidrop station (docs/plants.md, "Multidrop stations"): behind the
+// serial communication module at `start_io` of station `via`, multidrop No.
+// `number` (0-31). Routes name it with module I/O start_io ÷ 16.
+struct MultidropConfig {
+    std::string via;
+    std::uint16_t module_io = 0;   // start I/O ÷ 16: 0000-01FF
+    std::uint8_t number = 0;
+};
+
 struct NetworkConfig {
     std::uint16_t number = 0;
     devicemodel::DeviceSizes sizes{};
@@ -207,6 +226,8 @@ struct ServerConfig {
     std::vector<ModuleConfig> modules;     // on CPU No.1
     std::vector<NetworkConfig> networks;   // on CPU No.1
     std::vector<CpuConfig> cpus;           // CPU No.2–4
+    std::optional<RedundantConfig> redundant;   // one CPU of a redundant pair
+    std::optional<MultidropConfig> multidrop;   // a multidrop station behind another's serial module
     CpuRuntimeConfig cpu;                  // CPU No.1's runtime parameters
     PersistenceConfig persistence;
     std::vector<std::string> scenarios;    // "scenarios" and --scenario files, run together (docs/scenarios.md)

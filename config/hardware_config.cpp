@@ -111,6 +111,33 @@ CpuConfig cpu(const JsonAt& at) {
     return c;
 }
 
+// "redundant": {"pair": "press-b", "system": "A", "switchover_ms": 100} (docs/plants.md, "Redundant pairs").
+RedundantConfig redundant(const JsonAt& at) {
+    at.only_keys({"pair", "system", "switchover_ms"});
+    RedundantConfig r;
+    r.pair = at["pair"].string();
+    if (r.pair.empty()) at["pair"].fail("the pair needs the other station's name", "write \"pair\": \"press-b\"");
+    if (at.has("system")) {
+        const auto system = at["system"].string();
+        if (system != "A" && system != "B") at["system"].fail("unknown system '" + system + "'", "use \"A\" or \"B\"");
+        r.system = system[0];
+    }
+    if (at.has("switchover_ms")) r.switchover_ms = at["switchover_ms"].number(0, 60000, "use 0 to 60000 ms (default 100)");
+    return r;
+}
+
+// "multidrop": {"via": "line-1", "start_io": "0040", "number": 3} (docs/plants.md, "Multidrop stations").
+MultidropConfig multidrop(const JsonAt& at) {
+    at.only_keys({"via", "start_io", "number"});
+    MultidropConfig m;
+    m.via = at["via"].string();
+    if (m.via.empty()) at["via"].fail("a multidrop station needs the station whose serial module it hangs on", "write \"via\": \"line-1\"");
+    m.module_io = io_number(at["start_io"]);
+    if (m.module_io > 0x01FF) at["start_io"].fail("a serial module's start I/O is at most 1FF0", "use \"0000\"-\"1FF0\"");
+    m.number = static_cast<std::uint8_t>(at["number"].unsigned_int(31));
+    return m;
+}
+
 template <typename T, typename Parse>
 std::vector<T> list(const JsonAt& root, std::string_view key, Parse parse) {
     std::vector<T> items;
@@ -137,6 +164,11 @@ void parse_hardware(const JsonAt& root, ServerConfig& config) {
             if (config.cpus[i].number == config.cpus[j].number)
                 root["cpus"][i]["number"].fail("CPU No." + std::to_string(config.cpus[i].number) + " is configured twice",
                                                "give each CPU its own number");
+    if (root.has("redundant")) config.redundant = redundant(root["redundant"]);
+    if (root.has("multidrop")) config.multidrop = multidrop(root["multidrop"]);
+    if (config.redundant && config.multidrop)
+        root["multidrop"].fail("a CPU of a redundant pair is reached by its network modules, not as a multidrop station",
+                               "remove \"multidrop\" or \"redundant\"");
 }
 
 void attach_hardware(devicemodel::Cpu& cpu, const ServerConfig& config) {

@@ -152,7 +152,10 @@ public:
         stations_.push_back(std::move(station));
     }
 
-    std::vector<StationConfig> take() { return std::move(stations_); }
+    std::vector<StationConfig> take() {
+        check_pairs();
+        return std::move(stations_);
+    }
 
 private:
     void check_unique(const StationConfig& station, const std::string& where) {
@@ -181,6 +184,44 @@ private:
             if (auto [it, fresh] = masters_.emplace(n.number, name); !fresh)
                 throw ConfigError(where + ": stations '" + it->second + "' and '" + name + "' are both the master of network " +
                                   std::to_string(n.number) + "; mark one with \"master\": true");
+        }
+    }
+
+    // Redundant pairs and multidrop stations name other stations (docs/plants.md):
+    // a pair is two CPUs, one system A and one system B, each naming the other
+    // or only one naming its partner; a multidrop station hangs on a station
+    // of the plant.
+    void check_pairs() {
+        std::map<std::string, const StationConfig*> by_name;
+        for (const auto& s : stations_) by_name[s.server.name] = &s;
+        auto where = [&](const std::string& name) { return source_ + ", station '" + name + "'"; };
+        for (const auto& s : stations_) {
+            const auto& name = s.server.name;
+            if (const auto& m = s.server.multidrop) {
+                if (m->via == name) throw ConfigError(where(name) + ": /multidrop/via: a station cannot hang on itself; name the station with the serial module");
+                if (!by_name.contains(m->via))
+                    throw ConfigError(where(name) + ": /multidrop/via: no station is named '" + m->via + "'");
+            }
+            const auto& r = s.server.redundant;
+            if (!r) continue;
+            if (r->pair == name) throw ConfigError(where(name) + ": /redundant/pair: a station cannot pair with itself; name the other CPU");
+            auto other = by_name.find(r->pair);
+            if (other == by_name.end()) throw ConfigError(where(name) + ": /redundant/pair: no station is named '" + r->pair + "'");
+            const auto& o = other->second->server.redundant;
+            if (o && o->pair != name)
+                throw ConfigError(where(name) + ": /redundant/pair: '" + r->pair + "' is paired with '" + o->pair +
+                                  "'; a CPU is in one pair");
+            if (o && o->system == r->system)
+                throw ConfigError(where(name) + ": /redundant/system: '" + name + "' and '" + r->pair + "' are both system " +
+                                  std::string(1, r->system) + "; make one \"A\" and the other \"B\"");
+            if (o && o->switchover_ms && r->switchover_ms && *o->switchover_ms != *r->switchover_ms)
+                throw ConfigError(where(name) + ": /redundant/switchover_ms: '" + name + "' and '" + r->pair +
+                                  "' give different switch times; give it once, or the same on both");
+            for (const auto& t : stations_)   // a third station naming either as its partner
+                if (&t != &s && &t != other->second && t.server.redundant &&
+                    (t.server.redundant->pair == name || t.server.redundant->pair == r->pair))
+                    throw ConfigError(where(t.server.name) + ": /redundant/pair: '" + t.server.redundant->pair +
+                                      "' is in the pair of '" + name + "' and '" + r->pair + "' already; a CPU is in one pair");
         }
     }
 

@@ -136,6 +136,12 @@ constexpr Setting kSettings[] = {
      .help = "network modules and their link devices ([below](#modules-networks-and-cpus))"},
     {.section = S::Station, .key = "cpus", .flag = "", .type = T::Array, .default_text = "none",
      .help = "CPU No.2–4 of a multi-CPU system ([below](#modules-networks-and-cpus))"},
+    {.section = S::Station, .key = "redundant", .flag = "", .type = T::Object, .default_text = "none",
+     .help = "one CPU of a redundant pair: `{\"pair\": \"press-b\", \"system\": \"A\"}` "
+             "([plants.md](plants.md#redundant-pairs))"},
+    {.section = S::Station, .key = "multidrop", .flag = "", .type = T::Object, .default_text = "none",
+     .help = "a multidrop station behind another station's serial module: `{\"via\": \"line-1\", \"start_io\": "
+             "\"0040\", \"number\": 3}` ([plants.md](plants.md#multidrop-stations))"},
     {.section = S::Station, .key = "log_level", .flag = "log-level,l", .type = T::Choice, .flag_arg = F::Text,
      .choices = "trace|debug|info|warn|error|off", .default_text = "\"info\"",
      .help = "trace, debug, info, warn, error or off (default info)"},

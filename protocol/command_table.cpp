@@ -27,6 +27,7 @@ constexpr Families kIqrOnly = family_bit(Family::IQR);
 constexpr std::uint8_t kExt = kExtended;
 constexpr std::uint8_t kCtl = kControlCpuOnly;
 constexpr std::uint8_t kW = kWrites;
+constexpr std::uint8_t kFile = kFileRoute;
 constexpr std::uint8_t kOp = kOperator;
 // Remote password rows: exempt from the lock they open.
 constexpr std::uint8_t kPw = kPasswordExempt;
@@ -122,31 +123,32 @@ constexpr std::array kCommands = {
     CommandSpec{0x1631, 0x0000, "Remote Password Lock", password_lock, nullptr, Q, None, kPw},
     // File control (SLMP Reference Manual §5.8): 0000 Q/L, 0004 L, 0040 iQ-R; the
     // handler answers a subcommand the CPU's family does not speak (§2.2).
-    // kW on the commands system protect blocks (§5). FX5: not served.
-    CommandSpec{0x1810, 0x0000, "Read Directory/File (Q/L)", file_list, nullptr, Q, None, 0, kNotFx5},
-    CommandSpec{0x1810, 0x0040, "Read Directory/File (iQ-R)", file_list, nullptr, Q, None, 0, kNotFx5},
-    CommandSpec{0x1811, 0x0000, "Search Directory/File (Q/L)", file_search, nullptr, Q, None, 0, kNotFx5},
-    CommandSpec{0x1811, 0x0040, "Search Directory/File (iQ-R)", file_search, nullptr, Q, None, 0, kNotFx5},
-    CommandSpec{0x1820, 0x0000, "New File (Q/L)", file_new, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1820, 0x0040, "New File (iQ-R)", file_new, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1822, 0x0000, "Delete File (Q/L)", file_delete, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1822, 0x0004, "Delete File (L, 32-character password)", file_delete, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1822, 0x0040, "Delete File (iQ-R)", file_delete, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1824, 0x0000, "Copy File (Q/L)", file_copy, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1824, 0x0004, "Copy File (L, 32-character password)", file_copy, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1824, 0x0040, "Copy File (iQ-R)", file_copy, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1825, 0x0000, "Change File State (Q/L)", file_state, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1825, 0x0004, "Change File State (L, 32-character password)", file_state, nullptr, Q, None, kW,
+    // kW on the commands system protect blocks (§5). FX5: not served. kFile: the
+    // restricted request destinations of §3.1.4.
+    CommandSpec{0x1810, 0x0000, "Read Directory/File (Q/L)", file_list, nullptr, Q, None, kFile, kNotFx5},
+    CommandSpec{0x1810, 0x0040, "Read Directory/File (iQ-R)", file_list, nullptr, Q, None, kFile, kNotFx5},
+    CommandSpec{0x1811, 0x0000, "Search Directory/File (Q/L)", file_search, nullptr, Q, None, kFile, kNotFx5},
+    CommandSpec{0x1811, 0x0040, "Search Directory/File (iQ-R)", file_search, nullptr, Q, None, kFile, kNotFx5},
+    CommandSpec{0x1820, 0x0000, "New File (Q/L)", file_new, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1820, 0x0040, "New File (iQ-R)", file_new, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1822, 0x0000, "Delete File (Q/L)", file_delete, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1822, 0x0004, "Delete File (L, 32-character password)", file_delete, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1822, 0x0040, "Delete File (iQ-R)", file_delete, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1824, 0x0000, "Copy File (Q/L)", file_copy, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1824, 0x0004, "Copy File (L, 32-character password)", file_copy, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1824, 0x0040, "Copy File (iQ-R)", file_copy, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1825, 0x0000, "Change File State (Q/L)", file_state, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1825, 0x0004, "Change File State (L, 32-character password)", file_state, nullptr, Q, None, kFile | kW,
                 kNotFx5},
-    CommandSpec{0x1825, 0x0040, "Change File State (iQ-R)", file_state, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1826, 0x0000, "Change File Date (Q/L)", file_date, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1826, 0x0040, "Change File Date (iQ-R)", file_date, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x1827, 0x0000, "Open File (Q/L)", file_open, nullptr, Q, None, 0, kNotFx5},
-    CommandSpec{0x1827, 0x0004, "Open File (L, 32-character password)", file_open, nullptr, Q, None, 0, kNotFx5},
-    CommandSpec{0x1827, 0x0040, "Open File (iQ-R)", file_open, nullptr, Q, None, 0, kNotFx5},
-    CommandSpec{0x1828, 0x0000, "Read File", file_read, nullptr, Q, None, 0, kNotFx5},
-    CommandSpec{0x1829, 0x0000, "Write File", file_write, nullptr, Q, None, kW, kNotFx5},
-    CommandSpec{0x182A, 0x0000, "Close File", file_close, nullptr, Q, None, 0, kNotFx5},
+    CommandSpec{0x1825, 0x0040, "Change File State (iQ-R)", file_state, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1826, 0x0000, "Change File Date (Q/L)", file_date, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1826, 0x0040, "Change File Date (iQ-R)", file_date, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x1827, 0x0000, "Open File (Q/L)", file_open, nullptr, Q, None, kFile, kNotFx5},
+    CommandSpec{0x1827, 0x0004, "Open File (L, 32-character password)", file_open, nullptr, Q, None, kFile, kNotFx5},
+    CommandSpec{0x1827, 0x0040, "Open File (iQ-R)", file_open, nullptr, Q, None, kFile, kNotFx5},
+    CommandSpec{0x1828, 0x0000, "Read File", file_read, nullptr, Q, None, kFile, kNotFx5},
+    CommandSpec{0x1829, 0x0000, "Write File", file_write, nullptr, Q, None, kFile | kW, kNotFx5},
+    CommandSpec{0x182A, 0x0000, "Close File", file_close, nullptr, Q, None, kFile, kNotFx5},
 };
 
 constexpr bool sorted_and_unique() {

@@ -70,6 +70,10 @@ enum Flag : std::uint8_t {
     // Parameter Set Start/Set/End/Cancel (JA §4.2.1.8): served while a parameter
     // write is under way, when every other command answers CEE0.
     kParameterWrite = 1 << 6,
+    // File control (SLMP Reference Manual §3.1.4): the request destination module
+    // I/O No. may be only 03FF, 03D2 or 03D3 (and 03E0-03E3 of a multi-CPU
+    // system, Appendix 3); 03D0/03D1 and a multidrop station are refused.
+    kFileRoute = 1 << 7,
 };
 
 // The port families that serve a command (a bit per devicemodel::Family).
@@ -94,6 +98,7 @@ struct CommandSpec {
     bool writes() const { return flags & kWrites; }
     bool node_command() const { return flags & kNode; }
     bool parameter_write() const { return flags & kParameterWrite; }
+    bool file_route() const { return flags & kFileRoute; }
     bool served_by(devicemodel::Family family) const { return families & family_bit(family); }
     // A device command: it names devices, and its 00□2/00□3 forms are the iQ-R ones.
     bool device_command() const { return decode != nullptr; }

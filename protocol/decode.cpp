@@ -12,12 +12,13 @@ namespace {
 
 // The own station (§3.1.3–§3.1.5): 00/FF, or the port's own network and
 // station numbers when they are set; anything else would need routing, which
-// a CPU's built-in port cannot do. Module I/O 03FF is the connected CPU,
-// 03E0–03E3 CPU No.1–4 of a multi-CPU system. The codes are chosen; see
+// a CPU's built-in port cannot do. The codes are chosen; see
 // docs/end-codes.md: another network 4A01, another station 4A02.
-// Module I/O 03FF is the connected CPU, 03E0–03E3 CPU No.1–4 (4B02 otherwise, chosen).
-EndCode check_module_io(const Route& route, const CpuSet& cpus, std::size_t& target) {
-    if (route.module_io == 0x03FF) {
+// Module I/O 03FF is the connected CPU, 03E0–03E3 CPU No.1–4, and on a CPU of
+// a redundant pair 03D0–03D3 (the plant chose this CPU of the pair:
+// Station::route); anything else 4B02 (chosen).
+EndCode check_module_io(const Route& route, const CpuSet& cpus, const RouteIdentity& identity, std::size_t& target) {
+    if (route.module_io == 0x03FF || (identity.redundant && route.module_io >= 0x03D0 && route.module_io <= 0x03D3)) {
         target = 0;
         return EndCode::Ok;
     }
@@ -27,13 +28,19 @@ EndCode check_module_io(const Route& route, const CpuSet& cpus, std::size_t& tar
 }
 
 // A routed request: the plant's router resolved its network and station to
-// this station; a multidrop station behind it is not served (4A02).
-EndCode check_routed(const Route& route, const CpuSet& cpus, std::size_t& target) {
+// this station. A multidrop station takes its own serial-module route and
+// multidrop No.; any other multidrop station behind it is not served (4A02).
+EndCode check_routed(const Route& route, const CpuSet& cpus, const RouteIdentity& identity, std::size_t& target) {
+    if (identity.multidrop && route.module_io == identity.multidrop_io && route.multidrop == identity.multidrop_number) {
+        target = 0;
+        return EndCode::Ok;
+    }
     if (route.multidrop != 0x00) return EndCode::RouteStationNotFound;
-    return check_module_io(route, cpus, target);
+    return check_module_io(route, cpus, identity, target);
 }
 
-EndCode check_route(const FrameHeader& header, StationNumbers own, const CpuSet& cpus, std::size_t& target) {
+EndCode check_route(const FrameHeader& header, StationNumbers own, const CpuSet& cpus, const RouteIdentity& identity,
+                    std::size_t& target) {
     const auto& route = header.route;
     // Station-number-extended frame (§3.1.6): station 7C defers to the extended
     // station No., whose FFFF is the own station; otherwise that field is 0000.
@@ -42,7 +49,7 @@ EndCode check_route(const FrameHeader& header, StationNumbers own, const CpuSet&
             if (route.network != 0x00 && !(own.configured() && route.network == own.network))
                 return EndCode::RouteNetworkNotFound;
             if (header.extended_station != 0xFFFF || route.multidrop != 0x00) return EndCode::RouteStationNotFound;
-            return check_module_io(route, cpus, target);
+            return check_module_io(route, cpus, identity, target);
         }
         if (header.extended_station != 0x0000) return EndCode::RouteStationNotFound;
     }
@@ -50,7 +57,7 @@ EndCode check_route(const FrameHeader& header, StationNumbers own, const CpuSet&
     if (route.network != 0x00 && !by_numbers) return EndCode::RouteNetworkNotFound;
     const bool own_station = by_numbers ? route.station == own.station : route.station == 0xFF;
     if (!own_station || route.multidrop != 0x00) return EndCode::RouteStationNotFound;
-    return check_module_io(route, cpus, target);
+    return check_module_io(route, cpus, identity, target);
 }
 
 Request::Frame frame_status(FrameScan::Status status) {
@@ -64,6 +71,11 @@ Request::Frame frame_status(FrameScan::Status status) {
 }
 
 }  // namespace
+
+bool file_route_allowed(const Route& route) {
+    const auto io = route.module_io;
+    return io == 0x03FF || io == 0x03D2 || io == 0x03D3 || (io >= 0x03E0 && io <= 0x03E3);
+}
 
 bool Request::reads_devices() const { return spec && spec->device_command() && !spec->writes(); }
 bool Request::writes_devices() const { return spec && spec->device_command() && spec->writes(); }
@@ -110,8 +122,14 @@ Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy polic
     }
     request.has_command = true;
     request.data = body.subspan(body.size() - in.remaining());
-    request.route_error = routed ? check_routed(header.route, cpus_, request.target) : check_route(header, own, cpus_, request.target);
+    request.routed = routed;
+    request.route_error = routed ? check_routed(header.route, cpus_, identity_, request.target)
+                                 : check_route(header, own, cpus_, identity_, request.target);
     request.spec = find_command(request.command, request.subcommand);
+    // File commands reach only the destinations of §3.1.4's restricted table.
+    const auto* any_row = request.spec ? request.spec : find_any_row(request.command);
+    if (request.route_error == EndCode::Ok && any_row && any_row->file_route() && !file_route_allowed(header.route))
+        request.route_error = EndCode::RouteNotCpu;
     // A module's port passes another station's request on undecoded: that
     // station's CPU decodes it (the 7C extended station Nos. have no router).
     const bool other_station =

@@ -15,6 +15,8 @@ std::string_view describe(EndCode code) {
         case EndCode::RouteStationNotFound: return "the requested station cannot be reached from this port";
         case EndCode::RouteTooManyRelays: return "the route to the requested station passes more than 7 relay stations";
         case EndCode::RouteNotCpu: return "the requested module I/O number is not a CPU of this station";
+        case EndCode::OtherSystemError: return "the other system's CPU of the redundant pair cannot be accessed";
+        case EndCode::SystemSwitching: return "the redundant pair is switching systems";
         case EndCode::AsciiConversion: return "ASCII data that cannot be converted to binary";
         case EndCode::WordPointsOverLimit: return "word point count out of range";
         case EndCode::BitPointsOverLimit: return "bit point count out of range";

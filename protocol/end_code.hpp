@@ -18,6 +18,11 @@ enum class EndCode : std::uint16_t {
     RouteStationNotFound = 0x4A02,      // request for another station on network 0 (chosen)
     RouteTooManyRelays = 0x4A03,        // a route through more than 7 relay stations (chosen)
     RouteNotCpu = 0x4B02,               // module I/O that is not this CPU (chosen)
+    // A redundant pair (docs/plants.md, "Redundant pairs"): the codes the MELSEC
+    // redundant system manuals name for a request during a system switch and
+    // for the other system's CPU that cannot answer.
+    OtherSystemError = 0x4245,          // the other system's CPU (over the tracking cable) is down
+    SystemSwitching = 0x4248,           // a system switch is under way
     AsciiConversion = 0xC050,           // ASCII data that is not hexadecimal
     WordPointsOverLimit = 0xC051,
     BitPointsOverLimit = 0xC052,

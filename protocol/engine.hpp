@@ -84,6 +84,23 @@ bool password_guards(const devicemodel::Cpu& cpu, const Session& session);
 // CPU No.1–4 of a multi-CPU system; [0] is the CPU whose port the client uses.
 using CpuSet = std::array<devicemodel::Cpu*, 4>;
 
+// What the plant made of a station besides its CPU Nos. (docs/plants.md):
+// one CPU of a redundant pair, whose module I/O 03D0-03D3 name it once the
+// plant chose it from the pair; a multidrop station, reached through another
+// station's serial module (module I/O = that module's start I/O ÷ 16) with
+// its multidrop No.
+struct RouteIdentity {
+    bool redundant = false;
+    bool multidrop = false;
+    std::uint16_t multidrop_io = 0;
+    std::uint8_t multidrop_number = 0;
+};
+
+// The request destinations a file command may name (SLMP Reference Manual
+// §3.1.4): 03FF, 03D2, 03D3 — and 03E0-03E3, which Appendix 3 lists for
+// every file command (docs/end-codes.md). Others: 4B02.
+bool file_route_allowed(const Route& route);
+
 struct EngineOptions {
     std::size_t max_frame_bytes = 8192;   // a larger length field closes the connection
 };
@@ -121,6 +138,8 @@ public:
         ports_.at(static_cast<std::size_t>(number - 1)) = std::move(port);
     }
     const CpuSet& cpus() const { return cpus_; }
+    void set_identity(RouteIdentity identity) { identity_ = identity; }
+    const RouteIdentity& identity() const { return identity_; }
 
     // Where the frame at the start of `input` ends, without decoding it: the
     // framing decode() starts with (a transport that holds whole frames for
@@ -156,6 +175,7 @@ private:
     CpuSet cpus_{};
     std::array<PortProfile, 4> ports_{};   // the port of each CPU in cpus_
     EngineOptions options_;
+    RouteIdentity identity_;
     // What a command writes, kept between requests so its capacity is reused:
     // no allocation a request (a 960-word read's 1920 bytes included).
     std::vector<std::uint8_t> command_data_;

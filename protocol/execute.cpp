@@ -129,7 +129,11 @@ Outcome Engine::execute(const Request& request, Session& session) {
     if (request.header.kind == FrameKind::E4 && profile.frame_4e.kind != Refusal::Kind::Serve)
         return reply.refuse(profile.frame_4e, "4E frame on a port of " + cpu.name + ", which serves 3E only");
     if (!request.has_command) return bad_header(request, reply);
-    if (request.route_error != EndCode::Ok) return reply.error(request.route_error, route_note(request.header.route));
+    if (request.route_error != EndCode::Ok)
+        return reply.error(request.route_error, std::string(request.route_error == EndCode::SystemSwitching ||
+                                                                    request.route_error == EndCode::OtherSystemError
+                                                                ? describe(request.route_error)
+                                                                : route_note(request.header.route)));
     if (locked_out(cpu_, session, request.command))
         return reply.error(EndCode::RemotePasswordLocked,
                            "this connection is locked by the remote password; send Unlock 1630 with the password first");

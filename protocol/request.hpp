@@ -71,6 +71,7 @@ struct Request {
     // finds decodes the rest (station/network_map.hpp). `route_error` is what it
     // gets when nothing routes it.
     bool elsewhere = false;
+    bool routed = false;                   // a route brought it here from another station (Engine::decode)
     std::size_t target = 0;                // CPU No. - 1 the module I/O number selects
     std::span<const std::uint8_t> data;    // request data after the subcommand (valid while the input is)
     Operands operands;

@@ -87,7 +87,7 @@ Action action(const JsonAt& at) {
     at.expect_object();
     static constexpr std::string_view kinds[] = {"set", "increment", "pulse", "switch", "error", "clear_error",
                                                  "start_fault", "stop_fault", "power_cycle", "refuse_connections", "log",
-                                                 "ondemand", "drive"};
+                                                 "ondemand", "drive", "system_switch"};
     std::string key;
     for (auto k : kinds)
         if (at.has(k)) {
@@ -97,7 +97,7 @@ Action action(const JsonAt& at) {
     if (key.empty())
         at.fail("no action named",
                 "use one of set, increment, pulse, switch, error, clear_error, start_fault, stop_fault, power_cycle, "
-                "refuse_connections, log, ondemand, drive");
+                "refuse_connections, log, ondemand, drive, system_switch");
     auto only = [&](std::initializer_list<std::string_view> keys) { at.only_keys(keys); };
     if (key == "set") {
         only({"set"});
@@ -160,6 +160,11 @@ Action action(const JsonAt& at) {
         if (!a.present && !a.write_protect)
             d.fail("changes nothing", "give \"present\" (the card in or out) or \"write_protect\" (its LOCK switch)");
         return a;
+    }
+    if (key == "system_switch") {
+        only({"system_switch"});
+        if (!at["system_switch"].boolean()) at["system_switch"].fail("false does nothing", "write true or remove the action");
+        return SystemSwitchAction{};
     }
     only({"log"});
     return LogAction{at["log"].string()};

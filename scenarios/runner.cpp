@@ -234,6 +234,9 @@ void ScenarioRunner::run(const Trigger& trigger) {
                        },
                        [&](const RefuseAction& a) { refuse(a.for_ms, "trigger " + name); },
                        [&](const LogAction& a) { info(a.text); },
+                       [&](const SystemSwitchAction&) {
+                           if (station_) station_->system_switch("trigger " + name);
+                       },
                    },
                    action);
 }

@@ -38,6 +38,9 @@ public:
     // Ondemand 2101 to the clients the action names (`why`: the step or trigger, for logs).
     // (Stations without clients, as in tests, ignore it.)
     virtual void ondemand(const OndemandAction& /*action*/, const std::string& /*why*/) {}
+    // A redundant pair's system switch (docs/plants.md, "Redundant pairs"); a
+    // station of no pair logs that it has none.
+    virtual void system_switch(const std::string& /*why*/) {}
 
 protected:
     ~Station() = default;

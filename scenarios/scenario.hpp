@@ -195,6 +195,9 @@ struct FaultSwitchAction { std::string fault; bool enable = true; };
 struct PowerCycleAction { double off_ms = 1000; };
 struct RefuseAction { double for_ms = 1000; };
 struct LogAction { std::string text; };
+// A redundant pair's system switch: the standby system becomes the control
+// system (docs/plants.md, "Redundant pairs").
+struct SystemSwitchAction {};
 // {"drive": {"number": 2, "present": false}}: the SD card taken out (or put
 // back), its LOCK switch moved (docs/files.md).
 struct DriveAction {
@@ -205,7 +208,8 @@ struct DriveAction {
 };
 
 using Action = std::variant<SetAction, IncrementAction, PulseAction, SwitchAction, ErrorAction, ClearErrorAction,
-                            FaultSwitchAction, PowerCycleAction, RefuseAction, LogAction, OndemandAction, DriveAction>;
+                            FaultSwitchAction, PowerCycleAction, RefuseAction, LogAction, OndemandAction, DriveAction,
+                            SystemSwitchAction>;
 
 // "D100-D109" (or one device "D100") and a target, as an Ondemand's data;
 // nullopt with `error` set when the text names no device range.

@@ -107,7 +107,13 @@ Server::Server(const config::PlantConfig& plant)
 // The stations' network modules make one network map (docs/plants.md, "Networks
 // and routes"); every station reads it, no one changes it after this.
 void Server::join_networks() {
-    for (auto& s : stations_) networks_.add(s->station, s->settings.server.name, s->settings.server.networks);
+    for (auto& s : stations_) {
+        const auto& server = s->settings.server;
+        networks_.add(s->station, server.name, server.networks);
+        if (server.redundant) networks_.add_redundant(s->station, server.name, *server.redundant);
+        if (server.multidrop) networks_.add_multidrop(s->station, server.name, *server.multidrop);
+    }
+    networks_.link();
     for (auto& s : stations_) s->station.join(networks_);
 }
 

@@ -17,6 +17,7 @@ namespace asio = boost::asio;
 using protocol::EndCode;
 
 void NetworkMap::add(Station& station, const std::string& name, const std::vector<config::NetworkConfig>& networks) {
+    by_name_[name] = &station;
     // The plant's configuration refused a station No. or a master given twice (plant_config.cpp).
     for (const auto& n : networks) {
         if (n.station == 0) continue;   // link devices only: no module station No. to route to
@@ -98,6 +99,98 @@ NetworkMap::Found NetworkMap::find(Station& from, std::uint8_t network, std::uin
     }
     found.relay.hops.insert(found.relay.hops.end(), way->second.begin(), way->second.end());
     return found;
+}
+
+void NetworkMap::add_redundant(Station& station, const std::string& name, const config::RedundantConfig& redundant) {
+    by_name_[name] = &station;
+    redundant_.push_back({{&station, name}, redundant});
+}
+
+void NetworkMap::add_multidrop(Station& station, const std::string& name, const config::MultidropConfig& multidrop) {
+    by_name_[name] = &station;
+    multidrop_.push_back({{&station, name}, multidrop});
+}
+
+void NetworkMap::link() {
+    // The plant's configuration checked the names and that each pair is one A and one B (plant_config.cpp).
+    for (const auto& [self, config] : redundant_) {
+        auto partner = by_name_.find(config.pair);
+        if (partner == by_name_.end() || pair_of_.contains(self.station)) continue;
+        const bool a = config.system == 'A';
+        auto* first = a ? self.station : partner->second;
+        auto* second = a ? partner->second : self.station;
+        // Either CPU may give the switch time (the plant's check made them agree); chosen default 100 ms.
+        const auto other = std::find_if(redundant_.begin(), redundant_.end(),
+                                       [&](const auto& r) { return r.first.station == partner->second; });
+        auto ms = config.switchover_ms;
+        if (!ms && other != redundant_.end()) ms = other->second.switchover_ms;
+        const auto switchover = std::chrono::milliseconds(static_cast<long long>(ms.value_or(100)));
+        pairs_.push_back(std::make_unique<RedundantPair>(*first, a ? self.name : config.pair, *second,
+                                                         a ? config.pair : self.name, switchover));
+        pair_of_[first] = pair_of_[second] = pairs_.back().get();
+    }
+    for (const auto& [self, config] : multidrop_) {
+        auto via = by_name_.find(config.via);
+        if (via == by_name_.end()) continue;
+        drops_[{via->second, config.module_io, config.number}] = self.station;
+        drop_of_[self.station] = config;
+    }
+}
+
+RedundantPair* NetworkMap::pair_of(const Station& station) const {
+    auto it = pair_of_.find(&station);
+    return it == pair_of_.end() ? nullptr : it->second;
+}
+
+protocol::RouteIdentity NetworkMap::identity(const Station& station) const {
+    protocol::RouteIdentity identity;
+    identity.redundant = pair_of_.contains(&station);
+    if (auto it = drop_of_.find(&station); it != drop_of_.end()) {
+        identity.multidrop = true;
+        identity.multidrop_io = it->second.module_io;
+        identity.multidrop_number = it->second.number;
+    }
+    return identity;
+}
+
+void NetworkMap::beyond(Found& found, std::uint16_t module_io, std::uint8_t multidrop, bool file) const {
+    auto* at = found.relay.target;
+    auto pass = [&](Station* next) {   // `at` passes it on: over its serial line, or the tracking cable
+        if (found.relay.hops.back() != at) found.relay.hops.push_back(at);
+        found.relay.target = next;
+    };
+    if (module_io <= 0x01FF) {   // a multidrop station behind `at`'s serial module (§3.1.4, §3.1.5)
+        auto drop = drops_.find({at, module_io, multidrop});
+        if (drop == drops_.end()) return;   // none: the station answers (4A02, 4B02) as before
+        if (file) {   // not among the file commands' destinations (§3.1.4)
+            found.error = EndCode::RouteNotCpu;
+            return;
+        }
+        pass(drop->second);
+        return;
+    }
+    const auto* pair = pair_of(*at);
+    if (!pair) return;   // 03D0-03D3 at a CPU of no pair: 4B02 from it
+    const bool by_role = module_io == 0x03D0 || module_io == 0x03D1;
+    protocol::Route route;
+    route.module_io = module_io;
+    if (file && !protocol::file_route_allowed(route)) return;   // the restricted table: 4B02 from the station
+    // During a switch the roles are in between, and a file command would lose
+    // its file to the other system (§3.1.4 *1): the pair answers 4248.
+    if (pair->switching() && (by_role || file)) {
+        found.error = EndCode::SystemSwitching;
+        return;
+    }
+    if (module_io < 0x03D0 || module_io > 0x03D3) return;
+    auto& cpu = pair->pick(module_io);
+    if (&cpu == at) return;
+    // A CPU the route reached through the network that is down itself answers nothing (CF71 at the timer).
+    if (at != found.relay.hops.front() && !pair->available(*at)) return;
+    if (!pair->available(cpu)) {   // the other system over the tracking cable
+        found.error = EndCode::OtherSystemError;
+        return;
+    }
+    pass(&cpu);
 }
 
 namespace {

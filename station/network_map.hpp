@@ -8,12 +8,14 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "station/asio.hpp"
+#include "station/redundant_pair.hpp"
 
 #include "config/config.hpp"
 #include "protocol/end_code.hpp"
@@ -47,6 +49,26 @@ public:
     // stations on the shortest way there: at most 7.
     Found find(Station& from, std::uint8_t network, std::uint8_t station) const;
 
+    // A redundant pair's CPU and a multidrop station (docs/plants.md), by the
+    // names the configuration gives; link() makes them stations once every
+    // station is added (a partner that is no station of the plant: no pair).
+    void add_redundant(Station& station, const std::string& name, const config::RedundantConfig& redundant);
+    void add_multidrop(Station& station, const std::string& name, const config::MultidropConfig& multidrop);
+    void link();
+
+    // Past the station a route reached (`found.relay.target`): the CPU of its
+    // redundant pair that module I/O 03D0-03D3 names, or the multidrop station
+    // behind its serial module (module I/O 0000-01FF, multidrop No.). Moves the
+    // target there, the station passed becoming a hop; or sets `found.error`:
+    // 4248 while the pair switches (by role, and every file command), 4245
+    // when the CPU by role is down. `file`: the request is a file command.
+    void beyond(Found& found, std::uint16_t module_io, std::uint8_t multidrop, bool file) const;
+
+    // The station's own part in them, for its engine (protocol::RouteIdentity).
+    protocol::RouteIdentity identity(const Station& station) const;
+    // The pair a station is in; null when none.
+    RedundantPair* pair_of(const Station& station) const;
+
     // For GET /api/stations: each network's stations (No., name, master).
     struct Member {
         Station* station = nullptr;
@@ -63,6 +85,24 @@ private:
 
     std::map<std::uint16_t, std::vector<Member>> networks_;
     std::map<const Station*, std::vector<std::uint16_t>> modules_;   // the networks each station is on
+
+    struct Named {
+        Station* station;
+        std::string name;
+    };
+    std::vector<std::pair<Named, config::RedundantConfig>> redundant_;   // as configured, until link()
+    std::vector<std::pair<Named, config::MultidropConfig>> multidrop_;
+    std::vector<std::unique_ptr<RedundantPair>> pairs_;
+    std::map<const Station*, RedundantPair*> pair_of_;
+    struct Drop {   // a multidrop station: behind `via`'s serial module `module_io`, No. `number`
+        const Station* via;
+        std::uint16_t module_io;
+        std::uint8_t number;
+        auto operator<=>(const Drop&) const = default;
+    };
+    std::map<Drop, Station*> drops_;
+    std::map<std::string, Station*> by_name_;   // every station add() saw
+    std::map<const Station*, config::MultidropConfig> drop_of_;
 };
 
 // One connection's (or UDP port's) requests that a route takes to other

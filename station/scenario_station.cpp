@@ -13,6 +13,7 @@ void ScenarioStation::power_off() {
     for (const auto& [id, _] : activity_.connections()) ids.push_back(id);
     for (auto id : ids) activity_.close(id, "power cut (scenario)");
     log_.info("scenario: power off: {} connection(s) dropped, TCP ports closed", ids.size());
+    redundancy_.powered(false);
 }
 
 void ScenarioStation::power_on() {
@@ -20,6 +21,7 @@ void ScenarioStation::power_on() {
     // The CPU came back: UDP sessions start afresh (locked again under a remote password).
     transports_.restart_sessions();
     update_ports();
+    redundancy_.powered(true);
 }
 
 void ScenarioStation::refuse_connections(bool refuse) {

@@ -21,13 +21,21 @@ namespace slmp::station {
 class ScenarioStation final : public scenarios::Station {
 public:
     using Ondemand = std::function<void(const scenarios::OndemandAction&, const std::string&)>;
-    ScenarioStation(Activity& activity, Transports& transports, Ondemand ondemand, spdlog::logger& log)
-        : activity_(activity), transports_(transports), ondemand_(std::move(ondemand)), log_(log) {}
+    // A redundant pair's CPU (Station::powered, Station::system_switch).
+    struct Redundancy {
+        std::function<void(bool on)> powered;
+        std::function<void(const std::string& why)> system_switch;
+    };
+    ScenarioStation(Activity& activity, Transports& transports, Ondemand ondemand, Redundancy redundancy,
+                    spdlog::logger& log)
+        : activity_(activity), transports_(transports), ondemand_(std::move(ondemand)),
+          redundancy_(std::move(redundancy)), log_(log) {}
 
     void power_off() override;
     void power_on() override;
     void refuse_connections(bool refuse) override;
     void ondemand(const scenarios::OndemandAction& action, const std::string& why) override { ondemand_(action, why); }
+    void system_switch(const std::string& why) override { redundancy_.system_switch(why); }
 
 private:
     void update_ports();
@@ -35,6 +43,7 @@ private:
     Activity& activity_;
     Transports& transports_;
     Ondemand ondemand_;
+    Redundancy redundancy_;
     spdlog::logger& log_;
     bool off_ = false;
     bool refusing_ = false;

@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "config/station_pattern.hpp"
+#include "protocol/command_table.hpp"
 #include "protocol/error_response.hpp"
 #include "protocol/lock_owner.hpp"
 #include "protocol/ondemand.hpp"
@@ -19,6 +20,7 @@
 #include "station/drive_state.hpp"
 #include "station/inbox.hpp"
 #include "station/link_scan.hpp"
+#include "station/network_map.hpp"
 #include "station/log_outcome.hpp"
 #include "station/node_identity.hpp"
 #include "station/persistence.hpp"
@@ -181,6 +183,7 @@ Handled Station::handle(Ticket& ticket, protocol::Session& session, const protoc
 
 void Station::join(const NetworkMap& networks) {
     network_map_ = &networks;
+    engine_.set_identity(networks.identity(*this));
     if (!scan_) return;
     auto link = std::make_unique<LinkScan>(*this, networks, config_.networks);
     if (link->empty()) return;
@@ -188,19 +191,33 @@ void Station::join(const NetworkMap& networks) {
     scan_->after_scan([this](std::chrono::steady_clock::time_point) { link_scan_->scanned(); });
 }
 
-// docs/plants.md, "Networks and routes".
+// docs/plants.md, "Networks and routes", "Redundant pairs", "Multidrop stations".
 std::optional<Handled> Station::route(protocol::Request& request, std::span<const std::uint8_t> input,
                                       protocol::DataCodePolicy policy) {
-    if (!request.elsewhere || !network_map_) return std::nullopt;
+    if (!network_map_ || request.routed || !request.complete() || !request.has_command) return std::nullopt;
     const auto& route = request.header.route;
-    auto found = network_map_->find(*this, route.network, route.station);
+    const auto* row = request.spec ? request.spec : protocol::find_any_row(request.command);
+    const bool file = row && row->file_route();
+    NetworkMap::Found found;
+    if (request.elsewhere) {
+        found = network_map_->find(*this, route.network, route.station);
+    } else {
+        // The own station: only a CPU of a redundant pair may send it on (03D0-03D3
+        // naming its partner), or refuse it while the pair switches.
+        const bool by_pair = route.module_io >= 0x03D0 && route.module_io <= 0x03D3;
+        if (request.route_error != protocol::EndCode::Ok || !engine_.identity().redundant || !(by_pair || file))
+            return std::nullopt;
+        found.relay.hops.push_back(this);
+        found.relay.target = this;
+    }
+    if (found.error == protocol::EndCode::Ok) network_map_->beyond(found, route.module_io, route.multidrop, file);
     if (found.error != protocol::EndCode::Ok) {
         request.route_error = found.error;
         request.elsewhere = false;
         return std::nullopt;
     }
     if (found.relay.target == this) {   // this station by its network/station numbers
-        request = engine_.decode(input, policy, {}, true);
+        if (request.elsewhere) request = engine_.decode(input, policy, {}, true);
         return std::nullopt;
     }
     Handled relayed;
@@ -208,9 +225,26 @@ std::optional<Handled> Station::route(protocol::Request& request, std::span<cons
     relayed.outcome.command = request.command;
     relayed.outcome.subcommand = request.subcommand;
     relayed.relay = std::move(found.relay);
-    log_->debug("request {:04X}/{:04X} for network {:02X} station {:02X}: passed on", request.command, request.subcommand,
-                route.network, route.station);
+    log_->debug("request {:04X}/{:04X} for network {:02X} station {:02X} module I/O {:04X} multidrop {:02X}: passed on",
+                request.command, request.subcommand, route.network, route.station, route.module_io, route.multidrop);
     return relayed;
+}
+
+std::string Station::system_switch(const std::string& why) {
+    auto* pair = network_map_ ? network_map_->pair_of(*this) : nullptr;
+    if (!pair) return "this station is no CPU of a redundant pair";
+    return pair->switch_over(why);
+}
+
+void Station::powered(bool on) {
+    auto* pair = network_map_ ? network_map_->pair_of(*this) : nullptr;
+    if (!pair) return;
+    pair->set_available(*this, on);
+    // The control system's power cut switches the systems (automatic system switching).
+    if (!on && pair->is_control(*this)) {
+        auto why = pair->switch_over("power cut at the control system");
+        if (!why.empty()) log_->warn("redundant pair: no system switch: {}", why);
+    }
 }
 
 // Proxy mode (docs/twin.md, "Proxy"): the frame goes on as it came. A frame
@@ -468,7 +502,12 @@ void Station::start_scenarios(std::vector<scenarios::Scenario> list) {
                 log_->warn("scenario: {}: Ondemand not sent: {}", why, e.what());
             }
         };
-        scenario_station_ = std::make_unique<ScenarioStation>(activity_, *transports_, ondemand, *log_);
+        ScenarioStation::Redundancy redundancy{[this](bool on) { powered(on); }, [this](const std::string& why) {
+                                                   if (auto refused = system_switch(why); !refused.empty())
+                                                       log_->warn("scenario: {}: no system switch: {}", why, refused);
+                                               }};
+        scenario_station_ =
+            std::make_unique<ScenarioStation>(activity_, *transports_, ondemand, std::move(redundancy), *log_);
         scenario_.attach(cpu_, *scenario_station_);
         if (!list.empty()) scenario_.start(std::move(list), cpu_, *scenario_station_);
         scan_->after_scan([this](std::chrono::steady_clock::time_point now) { scenario_.scanned(now); });

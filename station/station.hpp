@@ -125,6 +125,12 @@ public:
     // Its link scan starts sending its LB/LW (station/link_scan.hpp).
     void join(const NetworkMap& networks);
     const NetworkMap* network_map() const { return network_map_; }
+    // A redundant pair's system switch (docs/plants.md, "Redundant pairs"): by
+    // the HTTP API and the scenario action. Empty when it switched, else why not.
+    std::string system_switch(const std::string& why);
+    // A scenario's power cut and return: the pair's CPU is down or up again; the
+    // control system's power cut switches the systems.
+    void powered(bool on);
     // Its home strand (a bare station has none: no relays reach it).
     const Home& home() const { return *home_; }
     // A request a route brought here (Relays::pass_on), on this station's

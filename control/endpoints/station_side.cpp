@@ -35,6 +35,7 @@ Router& StationSide::router() {
     add_program_endpoints(router, api);
     add_event_endpoint(router, api);
     add_metrics_endpoint(router, api);
+    add_redundant_endpoints(router, api);
     add_face_endpoints(router, api);
     return router;
 }

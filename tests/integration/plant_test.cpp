@@ -248,7 +248,7 @@ TEST_CASE("plant: a scenario on a group of stations, all or nothing, and stopped
 }
 
 TEST_CASE("plant: the shipped example plants check out", "[plant]") {
-    for (const char* file : {"press-line.json", "one-port-many-addresses.json", "line-networks.json"}) {
+    for (const char* file : {"press-line.json", "one-port-many-addresses.json", "line-networks.json", "redundant-line.json"}) {
         auto path = std::filesystem::path(SLMP_SOURCE_DIR) / "examples/plants" / file;
         auto result = run_sim({"--check-config", path.string()}, std::chrono::seconds(60));
         INFO(file << ": " << result.err);

@@ -4,6 +4,7 @@
 // Appendix 3 (commands that cannot reach CPU No.2–4), real-CPU measurements
 // (what each port family refuses).
 #include "protocol/command_table.hpp"
+#include "protocol/engine.hpp"
 
 #include <set>
 
@@ -43,6 +44,17 @@ TEST_CASE("command table: exactly 1001 1002 1003 1005 1006 1617 are operator (st
 TEST_CASE("command table: the commands that cannot reach CPU No.2-4 (Appendix 3)", "[table]") {
     CHECK(commands_where(&CommandSpec::control_cpu_only) ==
           std::set<std::uint16_t>{0x0613, 0x0619, 0x0801, 0x0802, 0x1613, 0x1617});
+}
+
+TEST_CASE("command table: exactly the file commands 1810-182A name only §3.1.4's file destinations", "[table][files]") {
+    CHECK(commands_where(&CommandSpec::file_route) ==
+          std::set<std::uint16_t>{0x1810, 0x1811, 0x1820, 0x1822, 0x1824, 0x1825, 0x1826, 0x1827, 0x1828, 0x1829, 0x182A});
+    // Every row of a command agrees (the decoder asks any row of an unknown subcommand).
+    for (const auto& row : all_commands())
+        if (row.command >= 0x1810 && row.command <= 0x182A) CHECK(row.file_route());
+    auto destination = [](std::uint16_t io) { return file_route_allowed(Route{0x00, 0xFF, io, 0x00}); };
+    for (std::uint16_t io : {0x03FF, 0x03D2, 0x03D3, 0x03E0, 0x03E1, 0x03E2, 0x03E3}) CHECK(destination(io));
+    for (std::uint16_t io : {0x03D0, 0x03D1, 0x0000, 0x0004, 0x01FF, 0x03E4}) CHECK_FALSE(destination(io));
 }
 
 TEST_CASE("command table: device commands have a decoder, the write ones are flagged as writes", "[table]") {

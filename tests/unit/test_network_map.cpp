@@ -109,3 +109,68 @@ TEST_CASE("network map: a module's port leaves another station's request undecod
     CHECK(!refused.elsewhere);
     CHECK(refused.route_error == EndCode::RouteNetworkNotFound);
 }
+
+TEST_CASE("network map: a redundant pair's 03D0-03D3, its system switch, multidrop stations behind a serial module",
+          "[route][redundant][multidrop]") {
+    Plant p;
+    auto& gw = p.add("gw", {on(1, 1)});
+    auto& a = p.add("press-a", {on(1, 2)});
+    auto& b = p.add("press-b", {on(1, 3)});
+    auto& line = p.add("line", {on(1, 4)});
+    auto& drop = p.add("drop", {});
+    slmp::config::RedundantConfig pair;
+    pair.pair = "press-a";
+    pair.system = 'B';
+    pair.switchover_ms = 0;   // a switch ends at once (a bare station has no clock to wait on)
+    p.map.add_redundant(b, "press-b", pair);
+    slmp::config::MultidropConfig md;
+    md.via = "line";
+    md.module_io = 0x0004;
+    md.number = 3;
+    p.map.add_multidrop(drop, "drop", md);
+    p.map.link();
+
+    CHECK(p.map.identity(a).redundant);
+    CHECK(p.map.identity(drop).multidrop);
+    CHECK(p.map.identity(drop).multidrop_io == 0x0004);
+    CHECK_FALSE(p.map.identity(gw).redundant);
+    auto* redundant = p.map.pair_of(a);
+    REQUIRE(redundant == p.map.pair_of(b));
+    CHECK(redundant->system_of(a) == 'A');
+    CHECK(&redundant->control() == &a);
+
+    auto through = [&](std::uint8_t station, std::uint16_t io, std::uint8_t multidrop = 0, bool file = false) {
+        auto found = p.map.find(gw, 1, station);
+        p.map.beyond(found, io, multidrop, file);
+        return found;
+    };
+    // Reached at press-a (station 2): 03D0 is press-a itself, 03D1 press-b over the tracking cable.
+    auto found = through(2, 0x03D0);
+    CHECK(found.relay.target == &a);
+    CHECK(found.relay.hops == std::vector<Station*>{&gw});
+    found = through(2, 0x03D1);
+    CHECK(found.relay.target == &b);
+    CHECK(found.relay.hops == std::vector<Station*>{&gw, &a});
+    CHECK(through(3, 0x03D2).relay.target == &a);
+    CHECK(through(3, 0x03D3).relay.target == &b);
+    // A file command by role is left to the CPU (which answers 4B02).
+    CHECK(through(3, 0x03D0, 0, true).relay.target == &b);
+
+    CHECK(redundant->switch_over("test").empty());
+    CHECK(&redundant->control() == &b);
+    CHECK_FALSE(redundant->switching());
+    CHECK(through(2, 0x03D0).relay.target == &b);
+    CHECK(through(2, 0x03D1).relay.target == &a);
+    // The standby down: no switch; a route to it by role 4245.
+    redundant->set_available(a, false);
+    CHECK(redundant->switch_over("test") == "the standby system (press-a) is down");
+    CHECK(through(3, 0x03D1).error == EndCode::OtherSystemError);
+
+    // Multidrop station 3 behind line's serial module at 0040 (route module I/O 0004).
+    found = through(4, 0x0004, 3);
+    CHECK(found.error == EndCode::Ok);
+    CHECK(found.relay.target == &drop);
+    CHECK(found.relay.hops == std::vector<Station*>{&gw, &line});
+    CHECK(through(4, 0x0004, 5).relay.target == &line);   // no such multidrop No.: line answers 4A02
+    CHECK(through(4, 0x0004, 3, true).error == EndCode::RouteNotCpu);
+}

@@ -133,3 +133,35 @@ TEST_CASE("a plant's metrics: one HELP/TYPE per family, a station label on every
           "h_bucket{station=\"p1\",le=\"+Inf\"} 1\nh_sum{station=\"p1\"} 0.5\nh_count{station=\"p1\"} 1\n"
           "h_bucket{station=\"p2\",le=\"+Inf\"} 2\nh_sum{station=\"p2\"} 1\nh_count{station=\"p2\"} 2\n");
 }
+
+TEST_CASE("redundant pairs and multidrop stations name stations of the plant", "[plant][redundant][multidrop]") {
+    auto p = plant(R"({"stations": [{"name": "a", "tcp_port": 1, "redundant": {"pair": "b", "switchover_ms": 50}},
+        {"name": "b", "tcp_port": 2, "redundant": {"pair": "a", "system": "B"}},
+        {"name": "d", "tcp_port": 3, "multidrop": {"via": "a", "start_io": "0040", "number": 31}}]})");
+    REQUIRE(p.stations[0].server.redundant);
+    CHECK(p.stations[0].server.redundant->system == 'A');
+    CHECK(p.stations[0].server.redundant->switchover_ms == 50);
+    CHECK(p.stations[1].server.redundant->system == 'B');
+    REQUIRE(p.stations[2].server.multidrop);
+    CHECK(p.stations[2].server.multidrop->module_io == 0x0004);
+    CHECK(p.stations[2].server.multidrop->number == 31);
+
+    CHECK_THROWS_WITH(plant(R"({"stations": [{"name": "a", "redundant": {"pair": "x"}}]})"),
+                      Catch::Contains("station 'a': /redundant/pair: no station is named 'x'"));
+    CHECK_THROWS_WITH(plant(R"({"stations": [{"name": "a", "redundant": {"pair": "a"}}]})"),
+                      Catch::Contains("cannot pair with itself"));
+    CHECK_THROWS_WITH(plant(R"({"stations": [{"name": "a", "tcp_port": 1, "redundant": {"pair": "b"}},
+        {"name": "b", "tcp_port": 2, "redundant": {"pair": "a"}}]})"),
+                      Catch::Contains("are both system A"));
+    CHECK_THROWS_WITH(plant(R"({"stations": [{"name": "a", "tcp_port": 1, "redundant": {"pair": "b"}},
+        {"name": "b", "tcp_port": 2}, {"name": "c", "tcp_port": 3, "redundant": {"pair": "b", "system": "B"}}]})"),
+                      Catch::Contains("a CPU is in one pair"));
+    CHECK_THROWS_WITH(plant(R"({"stations": [{"name": "a", "redundant": {"pair": "b", "system": "C"}}]})"),
+                      Catch::Contains("/redundant/system: unknown system 'C'"));
+    CHECK_THROWS_WITH(plant(R"({"stations": [{"name": "d", "multidrop": {"via": "nobody", "start_io": "0040", "number": 1}}]})"),
+                      Catch::Contains("/multidrop/via: no station is named 'nobody'"));
+    CHECK_THROWS_WITH(plant(R"({"stations": [{"name": "d", "multidrop": {"via": "x", "start_io": "0040", "number": 32}}]})"),
+                      Catch::Contains("/multidrop/number"));
+    CHECK_THROWS_WITH(plant(R"({"stations": [{"name": "d", "multidrop": {"via": "x", "start_io": "2000", "number": 1}}]})"),
+                      Catch::Contains("at most 1FF0"));
+}

@@ -61,7 +61,8 @@ json sample(const Setting& row) {
         {"counters", json::array()}, {"program", {{"file", "line1.csv"}}}, {"error", {{"code", "1900"}}},
         {"file", "line1.csv"}, {"comments", "comments.csv"}, {"timer_limit", json::object()}, {"seed", 7},
         {"wdt_ms", 200}, {"shard_host", "plant-{shard}.plant"}, {"upstream", "192.168.3.39:5000"},
-        {"compare", false}};   // true needs "upstream" beside it (checked in its own test)
+        {"compare", false}, {"redundant", {{"pair", "press-b"}}},
+        {"multidrop", {{"via", "line"}, {"start_io", "0040"}, {"number", 3}}}};   // true needs "upstream" beside it (checked in its own test)
     if (auto it = samples.find(std::string(row.key)); it != samples.end()) return it->second;
     switch (row.type) {
         case SettingType::Integer: return static_cast<std::uint64_t>(row.max);
