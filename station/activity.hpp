@@ -21,6 +21,9 @@ namespace slmp::station {
 
 using protocol::Transport;
 
+struct ComparedRequest;   // station/comparison.hpp
+
+
 using protocol::to_string;   // "tcp", "udp"
 
 // One handled frame, as the station saw it. Valid only during the call.
@@ -76,6 +79,9 @@ public:
     virtual void on_closed(const Connection&, std::string_view /*why*/) {}
     virtual void on_pushed(const PushRecord&) {}
     virtual void on_frontend_request(const FrontEndRecord&) {}
+    // Differential mode (docs/twin.md, "Compare"): a request the upstream and
+    // the twin answered differently, once it is in the report.
+    virtual void on_difference(const ComparedRequest&) {}
 
 protected:
     ~ActivityObserver() = default;
@@ -97,6 +103,9 @@ public:
     void closed(std::uint64_t id, std::string_view why);
     void pushed(const PushRecord& record) {
         for (auto* observer : observers_) observer->on_pushed(record);
+    }
+    void difference(const ComparedRequest& compared) {
+        for (auto* observer : observers_) observer->on_difference(compared);
     }
 
     // Open TCP connections by id (ids grow, so this is also the order they opened in).

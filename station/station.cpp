@@ -336,7 +336,8 @@ void Station::compare(std::span<const std::uint8_t> frame, protocol::DataCodePol
     up.time = answer.took;
     catch_up();   // the scans due while the upstream answered run first, as before any request here
     compared.twin = serve_twin(compared.request, policy, request, session, peer, modelled);
-    comparison_->add(std::move(compared));
+    // A difference is kept at the report's end: the event stream shows it as kept.
+    if (!comparison_->add(std::move(compared)).same()) activity_.difference(comparison_->differences().back());
 }
 
 protocol::differential::Observed Station::serve_twin(std::span<const std::uint8_t> frame, protocol::DataCodePolicy policy,

@@ -51,6 +51,7 @@ public:
     StrandTask<Answer> exchange(std::span<const std::uint8_t> frame, const protocol::Request& request);
 
     const config::UpstreamAddress& address() const { return address_; }
+    std::chrono::milliseconds timeout() const { return timeout_; }
     // At shutdown: the connection closes, waiting requests fail.
     void stop();
 

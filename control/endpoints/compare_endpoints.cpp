@@ -6,6 +6,7 @@
 // DELETE /api/compare — counting starts afresh.
 // A station without --compare answers 404 naming the option.
 #include "control/endpoints/api.hpp"
+#include "control/observers/activity_json.hpp"
 #include "control/http/timestamp.hpp"
 #include "devicemodel/hex.hpp"
 #include "scenarios/difference_json.hpp"
@@ -21,17 +22,6 @@ namespace {
 Reply not_comparing() {
     return error_reply(Status::not_found, "this station does not compare: start it with --upstream HOST:PORT --compare "
                                           "(a plant station: \"upstream\" and \"compare\": true; docs/twin.md)");
-}
-
-json compared_json(const station::ComparedRequest& c) {
-    auto entry = scenarios::difference_json(c.difference, c.request, "upstream", c.upstream, "twin", c.twin);
-    entry["number"] = c.number;
-    entry["time"] = iso_time(c.at);
-    entry["connection"] = c.connection;
-    entry["peer"] = c.peer.text();
-    entry["command"] = devicemodel::hex4(c.command);
-    entry["subcommand"] = devicemodel::hex4(c.subcommand);
-    return entry;
 }
 
 Reply report(Api& api) {

@@ -1,4 +1,4 @@
-// GET /api/events[?types=request,devices,connection] — a server-sent event
+// GET /api/events[?types=request,devices,connection,compare] — a server-sent event
 // stream (text/event-stream). The router only checks the query; the HTTP
 // session then hands the connection to stream_events() (event_stream.hpp).
 #include "control/endpoints/api.hpp"

@@ -6,7 +6,9 @@
 #include "control/http/timestamp.hpp"
 #include "control/observers/device_waits.hpp"
 #include "devicemodel/hex.hpp"
+#include "station/comparison.hpp"
 #include "station/scan_loop.hpp"
+#include "station/upstream.hpp"
 
 namespace slmp::control {
 
@@ -28,6 +30,25 @@ json timing(station::Station& station) {
             {"waiting", scan ? scan->waiting() : 0},
             {"scans", scan ? scan->scans() : 0},
             {"wakeups", scan ? scan->wakeups() : 0}};
+}
+
+// Who answers the clients (docs/twin.md): this station's own memory
+// ("serve"), the upstream alone ("proxy"), or the upstream with this station
+// serving beside it for the report ("compare").
+const char* serving_mode(station::Station& station) {
+    if (!station.upstream()) return "serve";
+    return station.comparison() ? "compare" : "proxy";
+}
+
+json upstream(station::Station& station) {
+    auto* upstream = station.upstream();
+    if (!upstream) return nullptr;
+    json entry{{"address", upstream->address().text()},
+               {"timeout_ms", upstream->timeout().count()},
+               {"compare", station.comparison() != nullptr}};
+    if (auto* comparison = station.comparison())
+        entry["compare_slack_ms"] = std::chrono::duration<double, std::milli>(comparison->slack()).count();
+    return entry;
 }
 
 Reply info(Api& api) {
@@ -58,6 +79,8 @@ Reply info(Api& api) {
         {"device_sizes", std::move(sizes)},
         {"devices", std::move(devices)},
         {"timing", timing(api.station)},
+        {"mode", serving_mode(api.station)},
+        {"upstream", upstream(api.station)},
         {"waits", api.waits.pending()},
         {"ports", {{"bind", api.ports.bind}, {"tcp", api.ports.tcp}, {"udp", api.ports.udp}, {"http", api.ports.http}}},
     });

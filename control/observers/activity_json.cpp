@@ -3,9 +3,22 @@
 #include "control/http/timestamp.hpp"
 #include "control/observers/request_summary.hpp"
 #include "devicemodel/hex.hpp"
+#include "scenarios/difference_json.hpp"
 #include "scenarios/recording.hpp"
+#include "station/comparison.hpp"
 
 namespace slmp::control {
+
+nlohmann::json compared_json(const station::ComparedRequest& c) {
+    auto entry = scenarios::difference_json(c.difference, c.request, "upstream", c.upstream, "twin", c.twin);
+    entry["number"] = c.number;
+    entry["time"] = iso_time(c.at);
+    entry["connection"] = c.connection;
+    entry["peer"] = c.peer.text();
+    entry["command"] = devicemodel::hex4(c.command);
+    entry["subcommand"] = devicemodel::hex4(c.subcommand);
+    return entry;
+}
 
 using nlohmann::json;
 using protocol::Outcome;

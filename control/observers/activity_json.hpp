@@ -23,4 +23,10 @@ nlohmann::json request_json(const station::RequestRecord& record, devicemodel::N
 // code or RSLT, and the bytes as hex ("request", "response").
 nlohmann::json frontend_request_json(const station::FrontEndRecord& record);
 
+// One request of differential mode and how the upstream's and the twin's
+// answers differ, as GET /api/compare lists it and "compare" events carry it:
+// scenarios/difference_json.hpp's fields with "number", "time", "connection",
+// "peer", "command", "subcommand" (docs/api.md, "Compare").
+nlohmann::json compared_json(const station::ComparedRequest& compared);
+
 }  // namespace slmp::control

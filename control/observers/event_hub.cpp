@@ -19,8 +19,10 @@ bool parse_event_types(std::string_view text, unsigned* types, std::string* erro
         if (name == "request") *types |= kRequestEvents;
         else if (name == "devices") *types |= kDeviceEvents;
         else if (name == "connection") *types |= kConnectionEvents;
+        else if (name == "compare") *types |= kCompareEvents;
         else {
-            *error = "unknown event type '" + std::string(name) + "'; use request, devices and/or connection, comma-separated";
+            *error = "unknown event type '" + std::string(name) +
+                     "'; use request, devices, connection and/or compare, comma-separated";
             return false;
         }
         start = end + 1;
@@ -158,6 +160,10 @@ void EventHub::on_pushed(const station::PushRecord& p) {
              {"command", "2101"},
              {"frame", scenarios::to_hex(p.frame)},
              {"why", p.why}});
+}
+
+void EventHub::on_difference(const station::ComparedRequest& compared) {
+    if (wanted(kCompareEvents)) publish(kCompareEvents, "compare", compared_json(compared));
 }
 
 void EventHub::on_opened(const station::Connection& connection) {

@@ -26,9 +26,15 @@
 
 namespace slmp::control {
 
-enum EventType : unsigned { kRequestEvents = 1, kDeviceEvents = 2, kConnectionEvents = 4, kAllEvents = 7 };
+enum EventType : unsigned {
+    kRequestEvents = 1,
+    kDeviceEvents = 2,
+    kConnectionEvents = 4,
+    kCompareEvents = 8,   // differential mode's differences (docs/twin.md, "Compare")
+    kAllEvents = 15
+};
 
-// "request,devices,connection" -> bits; false names an unknown type in *error.
+// "request,devices,connection,compare" -> bits; false names an unknown type in *error.
 bool parse_event_types(std::string_view text, unsigned* types, std::string* error);
 
 class EventHub final : public station::ActivityObserver, public devicemodel::WriteObserver {
@@ -72,6 +78,7 @@ public:
     void on_opened(const station::Connection& connection) override;
     void on_pushed(const station::PushRecord& push) override;   // an "ondemand" event (request events)
     void on_closed(const station::Connection& connection, std::string_view why) override;
+    void on_difference(const station::ComparedRequest& compared) override;   // a "compare" event
     void written(const devicemodel::DeviceSpec& spec, std::uint32_t first, std::uint32_t count) override;
     // Label-area words wake the waits; the event stream shows device runs only.
     void label_area_written(std::uint32_t) override {

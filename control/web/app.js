@@ -25,6 +25,7 @@ const state = {
   paused: false,
   live: false,
   pollTimer: null,
+  compare: null,        // {different, compared} in differential mode, else null
 };
 const MAX_WATCH_DEVICES = 1024;
 const MAX_CALL_ROWS = 200;
@@ -381,6 +382,50 @@ function addPush(push) {
     push.why || '', '—', '', `${push.frame.length / 2} bytes sent unasked`], 'push');
 }
 
+// ------------------------------------------------------------- differences --
+
+// Differential mode (--upstream HOST:PORT --compare; docs/twin.md, "Compare"):
+// the requests the upstream and this station answered differently, newest
+// first — the report (GET /api/compare) when the stream (re)opens, then each
+// "compare" event as it comes.
+const MAX_DIFFERENCE_ROWS = 100;
+
+function addDifferenceRow(d, body = $('#differences tbody')) {
+  const row = body.insertRow(0);
+  row.className = 'error';
+  for (const text of [`#${d.number}`, d.time.slice(11, 23), `${d.command}/${d.subcommand}`, d.kind, d.text])
+    row.insertCell().textContent = text;
+  row.title = `request ${d.request}`;
+  while (body.rows.length > MAX_DIFFERENCE_ROWS) body.deleteRow(-1);
+}
+
+function showDifferenceCount() {
+  $('#compare-count').textContent = `${state.compare.different} of ${state.compare.compared} compared`;
+}
+
+async function refreshDifferences() {
+  if (!state.compare) return;
+  try {
+    const report = await api('GET', stationPath('/compare'));
+    const body = $('#differences tbody');
+    body.replaceChildren();
+    for (const d of report.differences) addDifferenceRow(d, body);
+    state.compare.different = report.different;
+    state.compare.compared = report.compared;
+    showDifferenceCount();
+  } catch (e) {
+    showMessage(e.message);
+  }
+}
+
+function addDifference(d) {
+  if (!state.compare) return;
+  addDifferenceRow(d);
+  state.compare.different += 1;
+  state.compare.compared = Math.max(state.compare.compared, d.number);
+  showDifferenceCount();
+}
+
 // ---------------------------------------------------------- operating state --
 
 async function refreshState() {
@@ -410,18 +455,19 @@ function setLive(live, text) {
   badge.className = live ? 'live on' : 'live off';
   clearInterval(state.pollTimer);
   // Without the event stream, poll: the page keeps working, only slower.
-  if (!live) state.pollTimer = setInterval(() => { refreshAll(); refreshConnections(); }, 1000);
+  if (!live) state.pollTimer = setInterval(() => { refreshAll(); refreshConnections(); refreshDifferences(); }, 1000);
 }
 
 function connectEvents() {
   const source = new EventSource(stationPath('/events'));
-  source.onopen = () => { setLive(true, 'live'); refreshAll(); refreshConnections(); };
+  source.onopen = () => { setLive(true, 'live'); refreshAll(); refreshConnections(); refreshDifferences(); };
   source.onerror = () => setLive(false, 'polling (event stream lost)');
   source.addEventListener('devices', (e) => applyWrite(JSON.parse(e.data)));
   source.addEventListener('request', (e) => addCall(JSON.parse(e.data)));
   source.addEventListener('ondemand', (e) => addPush(JSON.parse(e.data)));
+  source.addEventListener('compare', (e) => addDifference(JSON.parse(e.data)));
   source.addEventListener('connection', () => refreshConnections());
-  source.addEventListener('overflow', () => refreshAll());
+  source.addEventListener('overflow', () => { refreshAll(); refreshDifferences(); });
 }
 
 // ------------------------------------------------------------------ start --
@@ -434,6 +480,16 @@ async function startStation() {
   $('#ports').textContent = `SLMP TCP ${ports.tcp.join(', ') || '—'} · UDP ${ports.udp.join(', ') || '—'}`;
   document.title = `${station.name ? station.name + ' · ' : ''}${info.profile.name} — slmp-sim monitor`;
   if (info.timing) $('#timing').textContent = `timing ${info.timing.mode}`;
+  // Proxy and differential mode (docs/twin.md): the clients get the upstream's answers.
+  if (info.upstream) {
+    $('#ports').textContent += ` · ${info.mode} → ${info.upstream.address}`;
+    if (info.mode === 'compare') {
+      state.compare = { different: 0, compared: 0 };
+      $('#compare-section').hidden = false;
+      // Requests answered the same give no event: the count of those compared follows the report.
+      setInterval(refreshDifferences, 2000);
+    }
+  }
 
   $('#watch-form').addEventListener('submit', (event) => {
     event.preventDefault();

@@ -321,3 +321,42 @@ TEST_CASE("compare: without an upstream it is refused, naming the fix", "[compar
     CHECK(checked.err.find("station 'twin': /compare: \"compare\" without \"upstream\"") != std::string::npos);
     CHECK(checked.err.find("give \"upstream\": \"HOST:PORT\" too") != std::string::npos);
 }
+
+TEST_CASE("compare: /api/info names the mode and the upstream, each difference is a compare event, a same answer none",
+          "[compare][proxy][events]") {
+    SimProcess plc(with_args({"--profile", "R08CPU"}));
+    REQUIRE(http(plc.http_port(), "PUT", "/api/devices/D100", R"({"values": [5]})").status == 200);
+    auto twin = twin_of(upstream_of(plc), {"--compare-slack", "600"});
+
+    auto info = http_get(twin.http_port(), "/api/info").json();
+    CHECK(info["mode"] == "compare");
+    CHECK(info["upstream"] == json{{"address", upstream_of(plc)}, {"timeout_ms", 3000}, {"compare", true},
+                                   {"compare_slack_ms", 600000.0}});
+    CHECK(http_get(plc.http_port(), "/api/info").json()["mode"] == "serve");
+    CHECK(http_get(plc.http_port(), "/api/info").json()["upstream"].is_null());
+
+    EventReader events(twin.http_port(), "?types=compare");
+    auto via = TcpClient::open(twin.tcp_port());
+    const auto same = client::read_words(kBin.options(), addr("D200"), 1);      // 0 on both sides
+    const auto different = client::read_words(kBin.options(), addr("D100"), 1);   // 5 upstream, 0 in the twin
+    CHECK(show(ask(via, same)) == show(expected_response(kBin, Bytes{0x00, 0x00})));
+    CHECK(show(ask(via, different)) == show(expected_response(kBin, Bytes{0x05, 0x00})));
+
+    // The first event is the second request's: the first answered the same and gave none.
+    auto event = events.next();
+    REQUIRE(event);
+    CHECK(event->type == "compare");
+    INFO(event->data.dump(2));
+    CHECK(event->data["number"] == 2);
+    CHECK(event->data["kind"] == "bytes");
+    CHECK(event->data["command"] == "0401");
+    CHECK(event->data["subcommand"] == "0000");
+    CHECK(event->data["request"] == lower_hex(different));
+    CHECK(event->data["upstream"]["bytes"] == lower_hex(expected_response(kBin, Bytes{0x05, 0x00})));
+    CHECK(event->data["twin"]["bytes"] == lower_hex(expected_response(kBin, Bytes{0x00, 0x00})));
+    // As /api/compare lists it.
+    auto listed = compare_report(twin)["differences"].at(0);
+    for (const char* field : {"number", "kind", "text", "request", "first_byte", "peer", "connection"})
+        CHECK(event->data[field] == listed[field]);
+    CHECK_FALSE(events.next(std::chrono::milliseconds(300)));
+}

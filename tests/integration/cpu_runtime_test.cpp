@@ -56,7 +56,7 @@ std::string ask(TcpLink& link, const Bytes& request) { return show(link.exchange
 
 }  // namespace
 
-TEST_CASE("SD203 follows remote STOP, PAUSE and RUN over the wire", "[cpu][runtime]") {
+TEST_CASE("SD203 follows remote STOP, PAUSE and RUN over the wire", "[cpu][runtime][no-proxy]") {
     SimProcess sim;
     for (const auto& w : {kBin, kAsc}) {
         INFO(w.name());
@@ -82,7 +82,7 @@ TEST_CASE("SD203 with the switch at STOP (--switch STOP)", "[cpu][runtime]") {
     CHECK(ask(tcp, read_words(kBin, "SD203", 1)) == show(ok_words(kBin, {0x0002})));
 }
 
-TEST_CASE("Remote RESET: no answer, every connection closed, latched memory kept", "[cpu][runtime][reset]") {
+TEST_CASE("Remote RESET: no answer, every connection closed, latched memory kept", "[cpu][runtime][reset][no-proxy]") {
     SimOptions options;
     options.config_json = R"({"cpu": {"remote_reset": true, "latch": {"D": [100, 199]}}})";
     SimProcess sim(options);
@@ -117,7 +117,7 @@ TEST_CASE("Remote RESET: no answer, every connection closed, latched memory kept
     CHECK(exchange(client::read_bits(kBin.options(), addr("M0"), 1)) == show(expected_response(kBin, hex("00"))));
 }
 
-TEST_CASE("remote password: lock and unlock across two connections", "[cpu][password]") {
+TEST_CASE("remote password: lock and unlock across two connections", "[cpu][password][no-proxy]") {
     SimOptions options;
     options.config_json = R"({"cpu": {"password": "secret7"}})";
     SimProcess sim(options);

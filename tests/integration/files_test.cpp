@@ -197,7 +197,7 @@ TEST_CASE("files: directory paging over 100 files in both dialects", "[files][tc
     }
 }
 
-TEST_CASE("files: locks hold across connections and survive a disconnect", "[files][tcp]") {
+TEST_CASE("files: locks hold across connections and survive a disconnect", "[files][tcp][no-proxy]") {
     TempDir data;
     auto folder = data.path() / "d";
     fs::create_directories(folder);

@@ -109,6 +109,6 @@ TEST_CASE("events: API writes, the types filter and connection changes", "[http]
     SECTION("an unknown type is a 400") {
         auto r = http_get(sim.http_port(), "/api/events?types=devices,calls");
         CHECK(r.status == 400);
-        CHECK(r.error() == "unknown event type 'calls'; use request, devices and/or connection, comma-separated");
+        CHECK(r.error() == "unknown event type 'calls'; use request, devices, connection and/or compare, comma-separated");
     }
 }

@@ -35,7 +35,7 @@ Bytes d0_response(const Wire& w) { return expected_response(w, word_data(w, {0})
 
 }  // namespace
 
-TEST_CASE("QnU built-in port: 4E gets no answer, 0101 and iQ-R subcommands get C059", "[profile][qnu]") {
+TEST_CASE("QnU built-in port: 4E gets no answer, 0101 and iQ-R subcommands get C059", "[profile][qnu][no-proxy]") {
     SimProcess sim(with_args({"--profile", "Q26UDEHCPU"}));
     auto c = TcpClient::open(sim.tcp_port());
     for (const auto& w : {kBin3, kAsc3}) {
@@ -67,7 +67,7 @@ TEST_CASE("QJ71E71 port: 4E is answered, iQ-R subcommands get C061", "[profile][
     CHECK(next(c) == show(expected_response(kBin3, concat({text("Q06UDVCPU       "), hex("68 03")}))));
 }
 
-TEST_CASE("FX5U built-in port: an iQ-R subcommand closes the TCP connection", "[profile][fx5u]") {
+TEST_CASE("FX5U built-in port: an iQ-R subcommand closes the TCP connection", "[profile][fx5u][no-proxy]") {
     SimProcess sim(with_args({"--profile", "FX5U-32MR"}));
     auto c = TcpClient::open(sim.tcp_port());
     REQUIRE(c.send(read_d0(kBin3)));

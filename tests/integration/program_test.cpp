@@ -547,7 +547,7 @@ TEST_CASE("program: a snapshot holds the program's timers and edges, restore goe
     CHECK(rig.bit("Y0"));
 }
 
-TEST_CASE("program: PAUSE holds the outputs, latch clear and Remote RESET keep the program", "[program]") {
+TEST_CASE("program: PAUSE holds the outputs, latch clear and Remote RESET keep the program", "[program][no-proxy]") {
     ProgramRig rig(forms_of("8_1").front(), "R08CPU", "", R"(, "remote_reset": true)");
     const auto options = Wire{FrameKind::E3, Codec::Binary, 0}.options();
     rig.set("X0", true);

@@ -153,39 +153,12 @@ double scenario_clock(std::uint16_t http_port) {
     return r.json()["scenarios"].at(0)["clock_ms"].get<double>();
 }
 
-}  // namespace
-
-TEST_CASE("slmp-replay --to-scenario: a recording's reads become a scenario that answers them again at their times",
-          "[scenario][replay][replay-tool][to-scenario]") {
-    // tests/data/hmi_session.jsonl: an HMI polling an R08CPU recorded by slmp-sim --record while the values
-    // changed (its times made round afterwards): 0401 word and bit reads in 3E binary, one in ASCII, a bit
-    // device read in words, a 4E random read 0403 of words and a double word, a write, a read refused 4031,
-    // and one read over UDP.
-    const auto recording = std::filesystem::path(SLMP_SOURCE_DIR) / "tests" / "data" / "hmi_session.jsonl";
-    TempDir dir;
-    const auto out = dir.path() / "day.json";
-    auto r = run_binary(SLMP_REPLAY_BINARY, {"--to-scenario", recording.string(), "--out", out.string()}, 30s);
-    INFO(r.out << r.err);
-    REQUIRE(r.exit_code == 0);
-    CHECK(r.out.empty());
-    CHECK(r.err == "slmp-replay: 9 read(s) of 21 device(s): 6 timeline step(s) in " + out.string() +
-                       "\n  1 read(s) not used: answered 4031\n");
-
-    // Byte for byte what tests/data/hmi_session.scenario.json holds (which the schema test checks too).
-    CHECK(read_text(out) == read_text(recording.parent_path() / "hmi_session.scenario.json"));
-    const auto scenario = nlohmann::json::parse(read_text(out));
-    CHECK(scenario["name"] == "hmi_session");
-    nlohmann::json initial = {{"D100", 10}, {"D101", 20}, {"D102", 30}, {"D200", 2}, {"D201", 1}, {"M0", 1}, {"M3", 1}};
-    for (int m : {1, 2, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15}) initial["M" + std::to_string(m)] = 0;
-    CHECK(scenario["initial"]["devices"] == initial);
-    CHECK(scenario["timeline"]["steps"] == nlohmann::json::parse(R"([
-        {"at_ms": 100, "set": {"D100": 11}}, {"at_ms": 250, "set": {"D100": 12}},
-        {"at_ms": 400, "set": {"D100": 13, "D102": 31}}, {"at_ms": 500, "set": {"M0": 0}},
-        {"at_ms": 750, "set": {"D101": 21}}, {"at_ms": 800, "set": {"D101": 22}}])"));
-
-    // The scenario as slmp-sim loads it, on a frozen clock: step to each recorded time (from the first
-    // exchange) and send the recorded request again; the answer is the recorded one, byte for byte.
-    SimProcess sim(with_args({"--scenario", out.string(), "--clock", "frozen"}));
+// Runs `scenario` in slmp-sim on a frozen clock, steps the clock to each
+// exchange's recorded time (from the first exchange) and sends its request
+// again: the answer must be the recorded one, byte for byte. Returns how many
+// exchanges were sent.
+std::size_t replay_at_recorded_times(const std::filesystem::path& recording, const std::filesystem::path& scenario) {
+    SimProcess sim(with_args({"--scenario", scenario.string(), "--clock", "frozen"}));
     const auto http_port = sim.http_port();
     std::map<std::uint64_t, TcpClient> tcp;
     UdpClient udp;
@@ -212,5 +185,65 @@ TEST_CASE("slmp-replay --to-scenario: a recording's reads become a scenario that
         }
         ++replayed;
     }
-    CHECK(replayed == 11);
+    return replayed;
+}
+
+}  // namespace
+
+TEST_CASE("slmp-replay --to-scenario: a recording's reads become a scenario that answers them again at their times",
+          "[scenario][replay][replay-tool][to-scenario]") {
+    // tests/data/hmi_session.jsonl: an HMI polling an R08CPU recorded by slmp-sim --record while the values
+    // changed (its times made round afterwards): 0401 word and bit reads in 3E binary, one in ASCII, a bit
+    // device read in words, a 4E random read 0403 of words and a double word, a write, a read refused 4031,
+    // and one read over UDP.
+    const auto recording = std::filesystem::path(SLMP_SOURCE_DIR) / "tests" / "data" / "hmi_session.jsonl";
+    TempDir dir;
+    const auto out = dir.path() / "day.json";
+    auto r = run_binary(SLMP_REPLAY_BINARY, {"--to-scenario", recording.string(), "--out", out.string()}, 30s);
+    INFO(r.out << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.empty());
+    CHECK(r.err == "slmp-replay: 9 read(s) of 21 device(s): 5 timeline step(s) (1 ramp(s)) in " + out.string() +
+                       "\n  1 read(s) not used: answered 4031\n");
+
+    // Byte for byte what tests/data/hmi_session.scenario.json holds (which the schema test checks too).
+    CHECK(read_text(out) == read_text(recording.parent_path() / "hmi_session.scenario.json"));
+    const auto scenario = nlohmann::json::parse(read_text(out));
+    CHECK(scenario["name"] == "hmi_session");
+    nlohmann::json initial = {{"D100", 10}, {"D101", 20}, {"D102", 30}, {"D200", 2}, {"D201", 1}, {"M0", 1}, {"M3", 1}};
+    for (int m : {1, 2, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15}) initial["M" + std::to_string(m)] = 0;
+    CHECK(scenario["initial"]["devices"] == initial);
+    // D100 read 10, 11, 12, 13 at 0, 100, 250 and 400 ms: each on the ramp from 10 to 13 over 400 ms.
+    CHECK(scenario["timeline"]["steps"] == nlohmann::json::parse(R"([
+        {"at_ms": 0, "ramp": "D100", "from": 10, "to": 13, "over_ms": 400},
+        {"at_ms": 400, "set": {"D102": 31}}, {"at_ms": 500, "set": {"M0": 0}},
+        {"at_ms": 750, "set": {"D101": 21}}, {"at_ms": 800, "set": {"D101": 22}}])"));
+
+    // The scenario as slmp-sim loads it, on a frozen clock: step to each recorded time (from the first
+    // exchange) and send the recorded request again; the answer is the recorded one, byte for byte.
+    CHECK(replay_at_recorded_times(recording, out) == 11);
+}
+
+TEST_CASE("slmp-replay --to-scenario: values that rose or fell linearly become ramps, a staircase stays steps",
+          "[scenario][replay][replay-tool][to-scenario]") {
+    // tests/data/hmi_ramp.jsonl: an HMI polling D300-D301 of an R08CPU at uneven times (hand-made, like a
+    // recording of slmp-sim --record): D300, a tank level, rises 0.1 a ms (100 at 0 ms ... 180 at 800 ms),
+    // then falls 0.05 a ms (to 150 at 1400 ms); D301 counts batches, 5, 6 at 650 ms, 7 at 1400 ms.
+    const auto recording = std::filesystem::path(SLMP_SOURCE_DIR) / "tests" / "data" / "hmi_ramp.jsonl";
+    TempDir dir;
+    const auto out = dir.path() / "ramp.json";
+    auto r = run_binary(SLMP_REPLAY_BINARY, {"--to-scenario", recording.string(), "--out", out.string()}, 30s);
+    INFO(r.out << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err == "slmp-replay: 8 read(s) of 2 device(s): 4 timeline step(s) (2 ramp(s)) in " + out.string() + "\n");
+    const auto scenario = nlohmann::json::parse(read_text(out));
+    CHECK(scenario["initial"]["devices"] == nlohmann::json::parse(R"({"D300": 100, "D301": 5})"));
+    // The rise and the fall each one ramp through every read of them; the counter's reads (5, 5, 5, 6 ...)
+    // lie on no line with a value between its ends: its changes stay steps.
+    CHECK(scenario["timeline"]["steps"] == nlohmann::json::parse(R"([
+        {"at_ms": 0, "ramp": "D300", "from": 100, "to": 180, "over_ms": 800},
+        {"at_ms": 650, "set": {"D301": 6}},
+        {"at_ms": 800, "ramp": "D300", "from": 180, "to": 150, "over_ms": 600},
+        {"at_ms": 1400, "set": {"D301": 7}}])"));
+    CHECK(replay_at_recorded_times(recording, out) == 8);
 }

@@ -111,7 +111,7 @@ TEST_CASE("A pipelined burst of 20 4E requests is answered in order with each se
     }
 }
 
-TEST_CASE("Garbage before a valid frame is skipped and only the frame is answered", "[framing][tcp][garbage]") {
+TEST_CASE("Garbage before a valid frame is skipped and only the frame is answered", "[framing][tcp][garbage][no-proxy]") {
     SimProcess sim;
     auto c = TcpClient::open(sim.tcp_port());
     // Bytes that cannot start a 3E/4E subheader in either code (no 0x50/0x54/'5').

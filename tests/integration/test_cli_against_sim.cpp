@@ -165,7 +165,7 @@ TEST_CASE("slmp usage errors exit 2 with one line naming the problem", "[cli][us
     CHECK(r.out.empty());
 }
 
-TEST_CASE("slmp connection failures exit 3", "[cli][connection]") {
+TEST_CASE("slmp connection failures exit 3", "[cli][connection][no-proxy]") {
     std::uint16_t closed_port;
     {
         SimProcess sim;   // a port that was just in use and is now closed

@@ -36,7 +36,7 @@ const std::string kMac = "02:00:37:D9:43:8C";
 
 }  // namespace
 
-TEST_CASE("slmp nodes and slmp status against a node station, UDP and TCP, binary and ASCII", "[cli][node]") {
+TEST_CASE("slmp nodes and slmp status against a node station, UDP and TCP, binary and ASCII", "[cli][node][no-proxy]") {
     TempDir dir;
     SimOptions options;
     options.config_json = node_config(dir);

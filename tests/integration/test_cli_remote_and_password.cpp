@@ -29,7 +29,7 @@ void expect_end_code(const RunResult& r, const std::string& code) {
 
 }  // namespace
 
-TEST_CASE("slmp stop, pause, run move the CPU's state (SD203)", "[cli][remote]") {
+TEST_CASE("slmp stop, pause, run move the CPU's state (SD203)", "[cli][remote][no-proxy]") {
     SimProcess sim;
     auto codec = GENERATE(as<std::string>{}, "--ascii");
     Args base = target(sim.tcp_port());
@@ -54,7 +54,7 @@ TEST_CASE("slmp stop, pause, run move the CPU's state (SD203)", "[cli][remote]")
     CHECK(read_word(base, "SD203") == 0x0000);
 }
 
-TEST_CASE("slmp latch-clear needs STOP, slmp reset is refused unless enabled", "[cli][remote]") {
+TEST_CASE("slmp latch-clear needs STOP, slmp reset is refused unless enabled", "[cli][remote][no-proxy]") {
     SECTION("switch at RUN") {
         SimProcess sim;
         expect_end_code(run_cli(target(sim.tcp_port()) + Args{"latch-clear"}), "4013");

@@ -157,7 +157,8 @@ int write_scenario(const Options& o, const slmp::scenarios::Recording& recording
         }
     }
     std::cerr << "slmp-replay: " << result.reads << " read(s) of " << result.devices << " device(s): "
-              << result.steps << " timeline step(s)" << (o.out.empty() ? std::string() : " in " + o.out) << "\n";
+              << result.steps << " timeline step(s)" << (result.ramps ? " (" + std::to_string(result.ramps) + " ramp(s))" : std::string())
+              << (o.out.empty() ? std::string() : " in " + o.out) << "\n";
     for (const auto& [why, count] : result.skipped) std::cerr << "  " << count << " read(s) not used: " << why << "\n";
     return 0;
 }

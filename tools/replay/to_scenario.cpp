@@ -1,6 +1,7 @@
 // slmp-replay --to-scenario (to_scenario.hpp).
 #include "tools/replay/to_scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -113,6 +114,46 @@ std::optional<std::vector<Seen>> values_read(const protocol::Request& request, c
     return seen;
 }
 
+// One device's value as one read showed it, at whole ms from the first exchange.
+struct Observation {
+    std::int64_t at_ms = 0;
+    std::uint16_t value = 0;
+};
+
+// The value a scenario `ramp` from `from` at 0 ms to `to` at `over_ms` writes
+// at `t` ms: the timeline's formula, rounded as a word is written
+// (scenarios/timeline.cpp, scenarios/device_values.cpp).
+double ramp_value(double from, double to, double over_ms, double t) {
+    return std::round(from + (to - from) * std::min(t / over_ms, 1.0));
+}
+
+// Whether a ramp from observation `first` to observation `last` shows every
+// read in between exactly as it was read: then it replays the same reads.
+bool on_one_ramp(const std::vector<Observation>& seen, std::size_t first, std::size_t last) {
+    const auto& a = seen[first];
+    const auto& b = seen[last];
+    const double over = static_cast<double>(b.at_ms - a.at_ms);
+    for (std::size_t i = first + 1; i < last; ++i)
+        if (ramp_value(a.value, b.value, over, static_cast<double>(seen[i].at_ms - a.at_ms)) != seen[i].value) return false;
+    return true;
+}
+
+// The furthest observation a ramp from `first` can end on — three or more
+// distinct values read on one line (two changes or more in one direction:
+// a value that moved, not one that jumped) — or `first` when there is none.
+std::size_t ramp_end(const std::vector<Observation>& seen, std::size_t first) {
+    std::size_t end = first;
+    for (std::size_t last = first + 2; last < seen.size() && on_one_ramp(seen, first, last); ++last) {
+        const auto low = std::min(seen[first].value, seen[last].value);
+        const auto high = std::max(seen[first].value, seen[last].value);
+        const bool between = std::any_of(seen.begin() + static_cast<std::ptrdiff_t>(first) + 1,
+                                         seen.begin() + static_cast<std::ptrdiff_t>(last),
+                                         [&](const Observation& o) { return o.value > low && o.value < high; });
+        if (between) end = last;
+    }
+    return end;
+}
+
 }  // namespace
 
 ScenarioFromRecording to_scenario(const scenarios::Recording& recording, const config::Profile& profile,
@@ -122,9 +163,9 @@ ScenarioFromRecording to_scenario(const scenarios::Recording& recording, const c
     protocol::Engine engine(cpu, profile.port, protocol::EngineOptions{1u << 20});
     const auto numbering = profile.cpu.numbering;
 
-    std::map<DeviceKey, std::uint16_t> first, now;
+    // Each device's values in the order they were read; of two reads in one ms the later.
+    std::map<DeviceKey, std::vector<Observation>> seen;
     std::map<DeviceKey, std::string> names;
-    json steps = json::array();
     const double start = recording.exchanges.empty() ? 0 : recording.exchanges.front().t_ms;
     for (const auto& exchange : recording.exchanges) {
         auto request = engine.decode(exchange.request, protocol::DataCodePolicy::Auto);
@@ -163,39 +204,59 @@ ScenarioFromRecording to_scenario(const scenarios::Recording& recording, const c
             continue;
         }
         ++result.reads;
-        json set = json::object();
+        // Whole ms from the first exchange, rounded down: a step is in place when the read was made.
+        const auto at = static_cast<std::int64_t>(std::floor(exchange.t_ms - start));
         for (const auto& v : *values) {
             DeviceKey key{v.device.spec, v.device.number};
             auto& name_of = names[key];
             if (name_of.empty()) name_of = devicemodel::format_address(v.device, numbering);
-            if (first.try_emplace(key, v.value).second) {   // the first read: its initial value
-                now[key] = v.value;
-                continue;
-            }
-            if (now[key] == v.value) continue;
-            now[key] = v.value;
-            set[name_of] = v.value;
-        }
-        if (set.empty()) continue;
-        // Whole ms from the first exchange, rounded down: the step is in place when the read was made.
-        const auto at = static_cast<std::int64_t>(std::floor(exchange.t_ms - start));
-        if (!steps.empty() && steps.back()["at_ms"] == at) {   // two reads in one ms: one step, the later value last
-            for (auto& [device, value] : set.items()) steps.back()["set"][device] = value;
-        } else {
-            steps.push_back(json{{"at_ms", at}, {"set", std::move(set)}});
+            auto& reads = seen[key];
+            if (!reads.empty() && reads.back().at_ms == at) reads.back().value = v.value;
+            else reads.push_back({at, v.value});
         }
     }
+    // Per device: its first value is its initial value; then, from each read
+    // on, a ramp where the next reads lie on one (the value moved linearly
+    // between them), else a `set` where the next read shows another value.
     json initial = json::object();
-    for (const auto& [key, value] : first) initial[names[key]] = value;
-    result.devices = first.size();
+    std::map<std::int64_t, json> sets;   // by at_ms: the devices set then
+    std::vector<json> ramps;
+    for (const auto& [key, reads] : seen) {
+        const auto& device = names[key];
+        initial[device] = reads.front().value;
+        for (std::size_t i = 0; i + 1 < reads.size();) {
+            if (auto end = ramp_end(reads, i); end != i) {
+                ramps.push_back(json{{"at_ms", reads[i].at_ms}, {"ramp", device}, {"from", reads[i].value},
+                                     {"to", reads[end].value}, {"over_ms", reads[end].at_ms - reads[i].at_ms}});
+                i = end;
+                continue;
+            }
+            if (reads[i + 1].value != reads[i].value) sets[reads[i + 1].at_ms][device] = reads[i + 1].value;
+            ++i;
+        }
+    }
+    // The steps in time order; at one time the values set first, then the ramps (by device).
+    json steps = json::array();
+    auto at_of = [](const json& step) { return step["at_ms"].get<std::int64_t>(); };
+    std::sort(ramps.begin(), ramps.end(), [&](const json& a, const json& b) {
+        return at_of(a) != at_of(b) ? at_of(a) < at_of(b) : a["ramp"].get<std::string>() < b["ramp"].get<std::string>();
+    });
+    auto ramp = ramps.begin();
+    for (auto& [at, set] : sets) {
+        for (; ramp != ramps.end() && at_of(*ramp) < at; ++ramp) steps.push_back(*ramp);
+        steps.push_back(json{{"at_ms", at}, {"set", std::move(set)}});
+    }
+    for (; ramp != ramps.end(); ++ramp) steps.push_back(*ramp);
+    result.devices = seen.size();
     result.steps = steps.size();
+    result.ramps = ramps.size();
     auto& s = result.scenario;
     s["name"] = name;
     s["description"] = "What the clients of a recorded session read (" + std::to_string(result.reads) + " read(s) of " +
                        std::to_string(result.devices) + " device(s), recorded with profile " +
                        (recording.profile.empty() ? std::string("unknown") : recording.profile) +
-                       "): each device's first value, then each change at the time a read showed it "
-                       "(slmp-replay --to-scenario)";
+                       "): each device's first value, then each change at the time a read showed it, as a ramp "
+                       "where the reads lie on one (slmp-replay --to-scenario)";
     if (!initial.empty()) s["initial"] = json{{"devices", std::move(initial)}};
     if (!steps.empty()) s["timeline"] = json{{"steps", std::move(steps)}};
     return result;

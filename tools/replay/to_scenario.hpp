@@ -3,7 +3,9 @@
 // slmp-sim --scenario loads as it is — every device's first value read as its
 // initial value, and a `set` step at each later time a read showed another
 // value (whole ms from the first exchange, rounded down, so a step is in
-// place by the time its read was made). The reads used: batch reads 0401
+// place by the time its read was made) — or, where three or more distinct
+// values read one after another lie on one line in time, a `ramp` through
+// them that shows each of those reads exactly as it was read. The reads used: batch reads 0401
 // (word and bit units, Q and iQ-R form, 3E and 4E, binary and ASCII) and
 // random reads 0403 (words and double words) answered 0000. Pure: no I/O.
 #pragma once
@@ -24,6 +26,7 @@ struct ScenarioFromRecording {
     std::size_t reads = 0;     // read exchanges whose values were taken
     std::size_t devices = 0;   // devices the scenario gives values
     std::size_t steps = 0;     // timeline steps
+    std::size_t ramps = 0;     // ... of them ramps
     // Exchanges that read devices but gave no values, by why ("answered C051").
     std::map<std::string, std::size_t> skipped;
 };
