@@ -5,9 +5,9 @@
 // option tables and config/schema.json are built from or checked against it
 // (tests/unit/test_settings_table.cpp). Model: Redis's standardConfig table.
 //
-// Not here: the other protocol faces' keys and flags ("kind", "hostlink",
-// "jw51cm", --hostlink-port, --serial) — they belong to the faces
-// (config/frontend_config.cpp), and the station's key check names them as extras.
+// Not here: the station's "kind" and the other protocol faces' sections and
+// flags — they belong to the faces (frontends/face.hpp, read by
+// config/frontend_config.cpp), and the station's key check names them as extras.
 #pragma once
 
 #include <cstdint>
