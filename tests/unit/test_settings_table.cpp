@@ -336,6 +336,9 @@ TEST_CASE("a nested object's keys are its rows, in the order its error lists the
         }
     for (const auto& [section, _] : objects)
         if (section != Section::LabelsFile) CHECK(held.count(section) == 1);
+    // Every section has its path (config/settings.cpp's kSections).
+    for (int i = 0; i <= static_cast<int>(Section::SizeRegister); ++i)
+        CHECK_NOTHROW(config::section_name(static_cast<Section>(i)));
 }
 
 TEST_CASE("a profile's nested objects refuse an unknown key naming their rows", "[settings]") {
