@@ -52,15 +52,14 @@ void timers(const JsonAt& list, CpuRuntimeConfig& cpu) {
     list.expect_array();
     for (std::size_t i = 0; i < list.json().size(); ++i) {
         auto at = list[i];
-        at.only_keys({"device", "points", "preset", "base_ms"});
+        check_keys(at, Section::Timer);
         auto [area, first] = area_and_number(at["device"]);
         if (!is_timer(area)) at["device"].fail("not a timer", "use T, ST, LT or LST, e.g. \"T0\"");
         devicemodel::TimerRange r{area, first, 1, preset(at["preset"], area), {}};
-        if (at.has("points")) r.count = static_cast<std::uint32_t>(at["points"].unsigned_int(0x7FFFFFFF));
+        if (at.has("points")) r.count = static_cast<std::uint32_t>(bounded_setting(at, Section::Timer, "points"));
         // iQ-R defaults: low-speed timers 100 ms; long timers count in 1 µs units.
         double base_ms = area == Area::LT || area == Area::LST ? 0.001 : 100;
-        if (at.has("base_ms"))
-            base_ms = at["base_ms"].number(0.001, 1000, "use 0.001 to 1000 (100 low-speed, 10 high-speed, 1)");
+        if (at.has("base_ms")) base_ms = number_setting(at, Section::Timer, "base_ms");
         r.base = std::chrono::microseconds(static_cast<std::int64_t>(std::llround(base_ms * 1000)));
         cpu.runtime.timers.push_back(r);
         cpu.timer_keys.push_back(at.pointer());
@@ -71,11 +70,11 @@ void counters(const JsonAt& list, CpuRuntimeConfig& cpu) {
     list.expect_array();
     for (std::size_t i = 0; i < list.json().size(); ++i) {
         auto at = list[i];
-        at.only_keys({"device", "points", "preset"});
+        check_keys(at, Section::Counter);
         auto [area, first] = area_and_number(at["device"]);
         if (!is_counter(area)) at["device"].fail("not a counter", "use C or LC, e.g. \"C0\"");
         devicemodel::CounterRange r{area, first, 1, preset(at["preset"], area)};
-        if (at.has("points")) r.count = static_cast<std::uint32_t>(at["points"].unsigned_int(0x7FFFFFFF));
+        if (at.has("points")) r.count = static_cast<std::uint32_t>(bounded_setting(at, Section::Counter, "points"));
         cpu.runtime.counters.push_back(r);
         cpu.counter_keys.push_back(at.pointer());
     }
@@ -117,9 +116,9 @@ void latch(const JsonAt& object, CpuRuntimeConfig& cpu) {
 }
 
 void lockout(const JsonAt& at, devicemodel::RuntimeConfig& runtime) {
-    at.only_keys({"attempts", "seconds"});
-    if (at.has("attempts")) runtime.lockout_attempts = static_cast<unsigned>(at["attempts"].unsigned_int(1000));
-    if (at.has("seconds")) runtime.lockout_period = std::chrono::seconds(at["seconds"].unsigned_int(86400));
+    check_keys(at, Section::Lockout);
+    if (at.has("attempts")) runtime.lockout_attempts = static_cast<unsigned>(bounded_setting(at, Section::Lockout, "attempts"));
+    if (at.has("seconds")) runtime.lockout_period = std::chrono::seconds(bounded_setting(at, Section::Lockout, "seconds"));
 }
 
 // "program": {"file": ..., "operation_error": "stop", "wdt_ms": 200, ...}; the
@@ -130,17 +129,10 @@ void program_object(const JsonAt& at, ProgramConfig& program) {
     program.file = at["file"].string();
     if (program.file.empty()) at["file"].fail("is empty", "name the program file (GX Works CSV list or text)");
     if (at.has("comments")) program.comments = at["comments"].string();
-    if (at.has("operation_error")) {
-        auto mode = at["operation_error"].string();
-        if (mode != "stop" && mode != "continue") at["operation_error"].fail("unknown mode '" + mode + "'", "use \"stop\" or \"continue\"");
-        o.operation_error = mode == "stop" ? program::OnOperationError::Stop : program::OnOperationError::Continue;
-    }
-    if (at.has("wdt_ms")) {
-        const auto& row = setting(Section::Program, "wdt_ms");
-        auto ms = at["wdt_ms"].unsigned_int(static_cast<std::uint64_t>(row.max));
-        if (ms < row.min || ms % 10 != 0) at["wdt_ms"].fail("out of range", row.fix);
-        o.wdt_ms = static_cast<std::uint32_t>(ms);
-    }
+    if (at.has("operation_error"))
+        o.operation_error = choice_setting(at, Section::Program, "operation_error") == "stop" ? program::OnOperationError::Stop
+                                                                                              : program::OnOperationError::Continue;
+    if (at.has("wdt_ms")) o.wdt_ms = static_cast<std::uint32_t>(bounded_setting(at, Section::Program, "wdt_ms"));
     if (at.has("timer_limit")) {
         auto limit = at["timer_limit"];
         check_keys(limit, Section::TimerLimit);
@@ -148,12 +140,10 @@ void program_object(const JsonAt& at, ProgramConfig& program) {
         if (limit.has("high_ms"))
             o.timer_high_ms = static_cast<std::uint32_t>(whole_setting(limit, Section::TimerLimit, "high_ms"));
     }
-    if (at.has("output_mode_at_run")) {
-        auto mode = at["output_mode_at_run"].string();
-        if (mode != "previous" && mode != "recalculate")
-            at["output_mode_at_run"].fail("unknown mode '" + mode + "'", "use \"previous\" or \"recalculate\"");
-        o.output_mode_at_run = mode == "previous" ? program::OutputModeAtRun::Previous : program::OutputModeAtRun::Recalculate;
-    }
+    if (at.has("output_mode_at_run"))
+        o.output_mode_at_run = choice_setting(at, Section::Program, "output_mode_at_run") == "previous"
+                                   ? program::OutputModeAtRun::Previous
+                                   : program::OutputModeAtRun::Recalculate;
     if (at.has("max_steps_per_scan")) o.max_steps_per_scan = whole_setting(at, Section::Program, "max_steps_per_scan");
     if (at.has("allow_double_timer_coils")) o.allow_double_timer_coils = at["allow_double_timer_coils"].boolean();
 }
@@ -174,7 +164,7 @@ void cpu_object(const JsonAt& at, CpuRuntimeConfig& cpu) {
     if (at.has("counters")) counters(at["counters"], cpu);
     if (at.has("error")) {
         auto e = at["error"];
-        e.only_keys({"code", "stop"});
+        check_keys(e, Section::CpuError);
         r.error = devicemodel::CpuError{e["code"].hex_code(), e.has("stop") && e["stop"].boolean()};
     }
 }
@@ -194,11 +184,7 @@ void parse_cpu_runtime(const JsonAt& root, ServerConfig& c) {
     if (root.has("clock_speed")) c.clock_speed = number_setting(root, Section::Station, "clock_speed");
     if (root.has("snapshot_interval_s"))
         c.persistence.snapshot_interval_s = number_setting(root, Section::Station, "snapshot_interval_s");
-    if (root.has("restore")) {
-        auto mode = root["restore"].string();
-        if (mode != "latched" && mode != "all") root["restore"].fail("unknown restore mode '" + mode + "'", "use \"latched\" or \"all\"");
-        c.persistence.restore_all = mode == "all";
-    }
+    if (root.has("restore")) c.persistence.restore_all = choice_setting(root, Section::Station, "restore") == "all";
 }
 
 devicemodel::RuntimeConfig checked_runtime_config(const CpuRuntimeConfig& cpu, const devicemodel::CpuProfile& profile) {

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "config/settings.hpp"
 #include "devicemodel/drives.hpp"
 
 namespace slmp::config {
@@ -25,12 +26,12 @@ void parse_drives(const JsonAt& root, ServerConfig& config) {
     for (const auto& item : drives.json().items()) {
         auto at = drives[item.key()];
         at.expect_object();
-        at.only_keys({"dir", "capacity", "write_protect", "present", "passwords"});
+        check_keys(at, Section::Drive);
         DriveConfig d;
         d.where = at.source() + ": " + at.pointer();
         d.number = drive_number(item.key(), d.where);
         if (at.has("dir")) d.dir = at["dir"].string();
-        if (at.has("capacity")) d.capacity = at["capacity"].unsigned_int(std::uint64_t{1} << 40);
+        if (at.has("capacity")) d.capacity = bounded_setting(at, Section::Drive, "capacity");
         if (at.has("write_protect")) d.write_protect = at["write_protect"].boolean();
         if (at.has("present")) d.present = at["present"].boolean();
         if (at.has("passwords")) {

@@ -2,6 +2,7 @@
 // memory), network modules (link devices), and CPU No.2–4 of a multi-CPU
 // system. Keys: docs/configuration.md "Modules, networks and CPUs".
 #include "config/config_parts.hpp"
+#include "config/settings.hpp"
 
 namespace slmp::config {
 
@@ -27,11 +28,11 @@ std::uint32_t hex_number(const JsonAt& at) {
 }
 
 ModuleConfig module(const JsonAt& at) {
-    at.only_keys({"start_io", "model", "buffer_words", "head_address"});
+    check_keys(at, Section::Module);
     ModuleConfig m;
     m.io_number = io_number(at["start_io"]);
     if (at.has("model")) m.model = at["model"].string();
-    m.buffer_words = static_cast<std::uint32_t>(at["buffer_words"].unsigned_int(16 * 1024 * 1024));
+    m.buffer_words = static_cast<std::uint32_t>(bounded_setting(at, Section::Module, "buffer_words"));
     if (at.has("head_address")) m.head_address = hex_number(at["head_address"]);
     return m;
 }
@@ -59,14 +60,10 @@ NetworkConfig::Range send_range(const JsonAt& at, const devicemodel::DeviceSizes
 
 // Link device sizes of a CC-Link IE Control network module unless given.
 NetworkConfig network(const JsonAt& at) {
-    at.only_keys({"number", "station", "master", "send", "device_sizes"});
+    check_keys(at, Section::Network);
     NetworkConfig n;
-    n.number = static_cast<std::uint16_t>(at["number"].unsigned_int(239));
-    if (n.number == 0) at["number"].fail("network numbers start at 1", "use 1-239");
-    if (at.has("station")) {
-        n.station = static_cast<std::uint8_t>(at["station"].unsigned_int(120));
-        if (n.station == 0) at["station"].fail("station numbers start at 1", "use 1-120");
-    }
+    n.number = static_cast<std::uint16_t>(bounded_setting(at, Section::Network, "number"));
+    if (at.has("station")) n.station = static_cast<std::uint8_t>(bounded_setting(at, Section::Network, "station"));
     if (at.has("master")) {
         n.master = at["master"].boolean();
         if (n.master && n.station == 0) at["master"].fail("a master station needs its station No.", "add \"station\": 1-120");
@@ -101,10 +98,9 @@ NetworkConfig network(const JsonAt& at) {
 }
 
 CpuConfig cpu(const JsonAt& at) {
-    at.only_keys({"number", "profile", "device_sizes", "devices"});
+    check_keys(at, Section::MultiCpu);
     CpuConfig c;
-    c.number = static_cast<int>(at["number"].unsigned_int(4));
-    if (c.number < 2) at["number"].fail("CPU No.1 is the one configured at the top level", "use 2, 3 or 4");
+    c.number = static_cast<int>(bounded_setting(at, Section::MultiCpu, "number"));
     c.profile = at["profile"].string();
     if (at.has("device_sizes")) c.device_sizes = parse_device_sizes(at["device_sizes"]);
     if (at.has("devices")) c.devices = parse_initial_values(at["devices"]);

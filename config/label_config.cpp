@@ -7,6 +7,7 @@
 #include "config/config.hpp"
 #include "config/config_parts.hpp"
 #include "config/json_path.hpp"
+#include "config/settings.hpp"
 #include "devicemodel/labels.hpp"
 
 namespace slmp::config {
@@ -30,7 +31,7 @@ std::vector<std::uint32_t> dims(const JsonAt& at) {
 }
 
 LabelEntry label(const JsonAt& at, const std::string& source) {
-    at.only_keys({"name", "type", "device", "dims", "external", "comment"});
+    check_keys(at, Section::Label);
     LabelEntry e;
     e.where = where(at, source);
     e.name = at["name"].string();
@@ -42,7 +43,7 @@ LabelEntry label(const JsonAt& at, const std::string& source) {
 }
 
 StructureEntry structure(const JsonAt& at, const std::string& source) {
-    at.only_keys({"name", "members", "comment"});
+    check_keys(at, Section::Structure);
     StructureEntry s;
     s.where = where(at, source);
     s.name = at["name"].string();
@@ -50,7 +51,7 @@ StructureEntry structure(const JsonAt& at, const std::string& source) {
     members.expect_array();
     for (std::size_t i = 0; i < members.json().size(); ++i) {
         auto m = members[i];
-        m.only_keys({"name", "type", "dims", "comment"});
+        check_keys(m, Section::Member);
         LabelMemberEntry e;
         e.where = where(m, source);
         e.name = m["name"].string();
@@ -132,7 +133,7 @@ LabelsConfig load_labels_file(const std::filesystem::path& file) {
     if (file.extension() == ".csv" || file.extension() == ".CSV") return parse_labels_csv(text.str(), file.string());
     auto json = parse_json(text.str(), file.string());
     JsonAt root(json, file.string());
-    root.only_keys({"labels", "structures"});
+    check_keys(root, Section::LabelsFile);
     LabelsConfig labels;
     parse_labels(root, file.parent_path(), labels);
     return labels;

@@ -52,15 +52,100 @@ Family family(const JsonAt& at) {
     at.fail("unknown family '" + text + "'", "use iQ-R, QnU, L, QJ71E71 or iQ-F");
 }
 
+std::uint32_t whole32(const JsonAt& at, Section section, std::string_view key) {
+    return static_cast<std::uint32_t>(bounded_setting(at, section, key));
+}
+
 protocol::PointLimit limit(const JsonAt& at) {
-    at.only_keys({"max", "end_code"});
-    return {static_cast<std::uint32_t>(at["max"].unsigned_int(65535)), at["end_code"].hex_code()};
+    check_keys(at, Section::PointLimit);
+    return {whole32(at, Section::PointLimit, "max"), at["end_code"].hex_code()};
 }
 
 protocol::FormLimit form_limit(const JsonAt& at) {
-    at.only_keys({"q", "iqr", "end_code"});
-    return {static_cast<std::uint32_t>(at["q"].unsigned_int(65535)), static_cast<std::uint32_t>(at["iqr"].unsigned_int(65535)),
-            at["end_code"].hex_code()};
+    check_keys(at, Section::FormLimit);
+    return {whole32(at, Section::FormLimit, "q"), whole32(at, Section::FormLimit, "iqr"), at["end_code"].hex_code()};
+}
+
+// "frame_1e": {"pc_type": "41"}: the port serves 1E and answers 15 with this byte.
+void frame_1e(const JsonAt& at, protocol::PortProfile& port) {
+    check_keys(at, Section::Frame1E);
+    auto code = at["pc_type"].hex_code();
+    if (code > 0xFF) at["pc_type"].fail("is not one byte", "write it like \"0041\" (00-FF)");
+    port.frame_1e = true;
+    port.pc_type_1e = static_cast<std::uint8_t>(code);
+}
+
+// "pipeline": {"buffer": 32, "over_limit": "CEE0"}: 1 + buffer ÷ connections (SLMP Reference Manual §3.3).
+void pipeline(const JsonAt& at, protocol::PortProfile& port) {
+    check_keys(at, Section::Pipeline);
+    port.pipeline_buffer = whole32(at, Section::Pipeline, "buffer");
+    if (at.has("over_limit")) port.pipeline_over_limit = refusal(at["over_limit"]);
+    if (port.pipeline_over_limit.kind == Refusal::Kind::Serve)
+        at["over_limit"].fail("cannot be answer", "use an end code such as \"CEE0\", silence or close");
+}
+
+void end_codes(const JsonAt& codes, protocol::PortProfile& port) {
+    check_keys(codes, Section::EndCodes);
+    port.not_supported_code = codes["not_supported"].hex_code();
+    port.out_of_range_code = codes["out_of_range"].hex_code();
+    port.not_accessible_code = codes["not_accessible"].hex_code();
+    port.unknown_device_code = codes["unknown_device"].hex_code();
+    port.bad_unit_code = codes["bad_unit"].hex_code();
+    if (codes.has("online_change_refused")) port.online_change_code = codes["online_change_refused"].hex_code();
+    if (codes.has("system_protect")) port.system_protect_code = codes["system_protect"].hex_code();
+}
+
+void limits(const JsonAt& limits, protocol::PortProfile& port) {
+    check_keys(limits, Section::Limits);
+    port.batch_words = limit(limits["batch_words"]);
+    port.batch_bits_binary = limit(limits["batch_bits_binary"]);
+    port.batch_bits_ascii = limit(limits["batch_bits_ascii"]);
+    port.loopback_max_bytes = whole32(limits, Section::Limits, "loopback_bytes");
+    port.random_read_points = form_limit(limits["random_read_points"]);
+    port.random_write_weight = form_limit(limits["random_write_weight"]);
+    port.random_write_bits = form_limit(limits["random_write_bits"]);
+    port.monitor_points = form_limit(limits["monitor_points"]);
+    port.block_count = form_limit(limits["block_count"]);
+    port.block_points = limit(limits["block_points"]);
+    if (limits.has("extended_over_limit_code")) port.extended_over_limit_code = limits["extended_over_limit_code"].hex_code();
+}
+
+// Keyed by topic, so a profile that extends another changes one entry.
+void manual_vs_hardware(const JsonAt& differences, Profile& profile) {
+    differences.expect_object();
+    for (const auto& [topic, _] : differences.json().items()) {
+        auto d = differences[topic];
+        check_keys(d, Section::Difference);
+        auto follows = d["follows"].string();
+        if (!is_choice(setting(Section::Difference, "follows"), follows))
+            d["follows"].fail("must be \"manual\" or \"hardware\"", "say which of the two the profile does");
+        profile.manual_vs_hardware.push_back({d["what"].string(), d["manual"].string(), d["hardware"].string(),
+                                              follows == "hardware"});
+    }
+}
+
+// [min, max] characters, e.g. [4, 4] for Q/L, [6, 32] for iQ-R.
+void password_length(const JsonAt& rule, CpuProfile& p) {
+    rule.expect_array();
+    if (rule.json().size() != 2) rule.fail("must be [min, max]", "write e.g. [6, 32] (iQ-R) or [4, 4] (Q/L)");
+    p.password_min_length = static_cast<std::uint8_t>(rule[0].unsigned_int(32));
+    p.password_max_length = static_cast<std::uint8_t>(rule[1].unsigned_int(32));
+    if (p.password_min_length == 0 || p.password_min_length > p.password_max_length)
+        rule.fail("min must be 1..max", "write e.g. [6, 32] (iQ-R) or [4, 4] (Q/L)");
+}
+
+void size_registers(const JsonAt& regs, CpuProfile& p) {
+    regs.expect_array();
+    for (std::size_t i = 0; i < regs.json().size(); ++i) {
+        auto reg = regs[i];
+        check_keys(reg, Section::SizeRegister);
+        auto bits = bounded_setting(reg, Section::SizeRegister, "bits");
+        if (bits != 16 && bits != 32) reg["bits"].fail("must be 16 or 32", "write 16 or 32");
+        auto sd = static_cast<std::uint16_t>(bounded_setting(reg, Section::SizeRegister, "sd"));
+        if (sd + (bits == 32 ? 1u : 0u) >= p.size(Area::SD))
+            reg["sd"].fail("SD" + std::to_string(sd) + " is outside the SD size", "raise device_sizes.SD or fix the number");
+        p.size_registers.push_back({area(reg["device"]), sd, static_cast<std::uint8_t>(bits)});
+    }
 }
 
 std::vector<Area> areas(const JsonAt& at) {
@@ -98,26 +183,12 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
     p.family = family(root["family"]);
     port.frame_4e = refusal(root["frame_4e"]);
     port.iqr_subcommands = refusal(root["iqr_subcommands"]);
-    if (root.has("frame_1e")) {   // {"pc_type": "41"}: the port serves 1E and answers 15 with this byte
-        auto e1 = root["frame_1e"];
-        e1.only_keys({"pc_type"});
-        auto code = e1["pc_type"].hex_code();
-        if (code > 0xFF) e1["pc_type"].fail("is not one byte", "write it like \"0041\" (00-FF)");
-        port.frame_1e = true;
-        port.pc_type_1e = static_cast<std::uint8_t>(code);
-    }
+    if (root.has("frame_1e")) frame_1e(root["frame_1e"], port);
     if (root.has("station_extended_frame")) port.station_extended_frame = root["station_extended_frame"].boolean();
     if (root.has("relays")) port.relays = root["relays"].boolean();
     if (root.has("node_commands")) port.node_commands = root["node_commands"].boolean();
     if (root.has("timing")) profile.timing = parse_timing_model(root["timing"], profile.timing);
-    if (root.has("pipeline")) {   // {"buffer": 32, "over_limit": "CEE0"}: 1 + buffer ÷ connections (SLMP Reference Manual §3.3)
-        auto pipeline = root["pipeline"];
-        pipeline.only_keys({"buffer", "over_limit"});
-        port.pipeline_buffer = static_cast<std::uint32_t>(pipeline["buffer"].unsigned_int(65535));
-        if (pipeline.has("over_limit")) port.pipeline_over_limit = refusal(pipeline["over_limit"]);
-        if (port.pipeline_over_limit.kind == Refusal::Kind::Serve)
-            pipeline["over_limit"].fail("cannot be answer", "use an end code such as \"CEE0\", silence or close");
-    }
+    if (root.has("pipeline")) pipeline(root["pipeline"], port);
     // Which commands a port family serves is the command table's (families);
     // a profile may refuse more.
     if (root.has("unsupported_commands")) {
@@ -127,91 +198,28 @@ Profile parse_profile(const std::string& json_text, const std::string& source, c
             port.unsupported_commands.push_back(unsupported[i].hex_code());
     }
 
-    auto codes = root["end_codes"];
-    codes.only_keys({"not_supported", "out_of_range", "not_accessible", "unknown_device", "bad_unit",
-                     "online_change_refused", "system_protect"});
-    port.not_supported_code = codes["not_supported"].hex_code();
-    port.out_of_range_code = codes["out_of_range"].hex_code();
-    port.not_accessible_code = codes["not_accessible"].hex_code();
-    port.unknown_device_code = codes["unknown_device"].hex_code();
-    port.bad_unit_code = codes["bad_unit"].hex_code();
-    if (codes.has("online_change_refused")) port.online_change_code = codes["online_change_refused"].hex_code();
-    if (codes.has("system_protect")) port.system_protect_code = codes["system_protect"].hex_code();
+    end_codes(root["end_codes"], port);
     if (root.has("online_change")) port.online_change = root["online_change"].boolean();
-    if (root.has("manual_vs_hardware")) {
-        // Keyed by topic, so a profile that extends another changes one entry.
-        auto differences = root["manual_vs_hardware"];
-        differences.expect_object();
-        for (const auto& [topic, _] : differences.json().items()) {
-            auto d = differences[topic];
-            d.only_keys({"what", "manual", "hardware", "follows"});
-            auto follows = d["follows"].string();
-            if (follows != "manual" && follows != "hardware")
-                d["follows"].fail("must be \"manual\" or \"hardware\"", "say which of the two the profile does");
-            profile.manual_vs_hardware.push_back({d["what"].string(), d["manual"].string(), d["hardware"].string(),
-                                                  follows == "hardware"});
-        }
-    }
+    if (root.has("manual_vs_hardware")) manual_vs_hardware(root["manual_vs_hardware"], profile);
     if (root.has("max_connections"))
         port.max_connections = static_cast<unsigned>(whole_setting(root, Section::Profile, "max_connections"));
 
-    auto limits = root["limits"];
-    limits.only_keys({"batch_words", "batch_bits_binary", "batch_bits_ascii", "loopback_bytes", "random_read_points",
-                      "random_write_weight", "random_write_bits", "monitor_points", "block_count", "block_points",
-                      "extended_over_limit_code"});
-    port.batch_words = limit(limits["batch_words"]);
-    port.batch_bits_binary = limit(limits["batch_bits_binary"]);
-    port.batch_bits_ascii = limit(limits["batch_bits_ascii"]);
-    port.loopback_max_bytes = static_cast<std::uint32_t>(limits["loopback_bytes"].unsigned_int(65535));
-    port.random_read_points = form_limit(limits["random_read_points"]);
-    port.random_write_weight = form_limit(limits["random_write_weight"]);
-    port.random_write_bits = form_limit(limits["random_write_bits"]);
-    port.monitor_points = form_limit(limits["monitor_points"]);
-    port.block_count = form_limit(limits["block_count"]);
-    port.block_points = limit(limits["block_points"]);
-    if (limits.has("extended_over_limit_code")) port.extended_over_limit_code = limits["extended_over_limit_code"].hex_code();
+    limits(root["limits"], port);
     port.mixed_block_write = refusal(root["mixed_block_write"]);
     if (root.has("station_buffer_words"))
-        p.station_buffer_words = static_cast<std::uint32_t>(root["station_buffer_words"].unsigned_int(0x7FFFFFFF));
+        p.station_buffer_words = whole32(root, Section::Profile, "station_buffer_words");
 
-    auto sizes = root["device_sizes"];
-    sizes.expect_object();
-    for (const auto& [name, _] : sizes.json().items()) {
-        auto at = sizes[name];
-        auto a = devicemodel::area_by_name(name);
-        if (!a) at.fail("unknown device '" + name + "'", "use a device area such as X, M, D, T, ZR, LZ");
-        p.sizes[static_cast<std::size_t>(*a)] = static_cast<std::uint32_t>(at.unsigned_int(0x7FFFFFFF));
-    }
+    for (auto [area, points] : parse_device_sizes(root["device_sizes"])) p.sizes[static_cast<std::size_t>(area)] = points;
     p.start_only_range_check = areas(root["start_only_range_check"]);
     port.read_only = areas(root["read_only_devices"]);
-    auto regs = root["size_registers"];
-    regs.expect_array();
-    for (std::size_t i = 0; i < regs.json().size(); ++i) {
-        auto reg = regs[i];
-        reg.only_keys({"device", "sd", "bits"});
-        auto bits = reg["bits"].unsigned_int(32);
-        if (bits != 16 && bits != 32) reg["bits"].fail("must be 16 or 32", "write 16 or 32");
-        auto sd = static_cast<std::uint16_t>(reg["sd"].unsigned_int(0xFFFF));
-        if (sd + (bits == 32 ? 1u : 0u) >= p.size(Area::SD))
-            reg["sd"].fail("SD" + std::to_string(sd) + " is outside the SD size", "raise device_sizes.SD or fix the number");
-        p.size_registers.push_back({area(reg["device"]), sd, static_cast<std::uint8_t>(bits)});
-    }
+    size_registers(root["size_registers"], p);
     port.zr_ascii_hex = root["zr_ascii_hex"].boolean();
     if (root.has("xy_radix")) {
-        auto radix = root["xy_radix"].unsigned_int(16);
+        auto radix = bounded_setting(root, Section::Profile, "xy_radix");
         if (radix != 8 && radix != 16) root["xy_radix"].fail("must be 8 or 16", "write 8 (iQ-F: X0-X7, X10) or 16 (iQ-R, Q, L)");
         p.numbering.xy = static_cast<devicemodel::Radix>(radix);
     }
-    if (root.has("remote_password_length")) {
-        // [min, max] characters, e.g. [4, 4] for Q/L, [6, 32] for iQ-R.
-        auto rule = root["remote_password_length"];
-        rule.expect_array();
-        if (rule.json().size() != 2) rule.fail("must be [min, max]", "write e.g. [6, 32] (iQ-R) or [4, 4] (Q/L)");
-        p.password_min_length = static_cast<std::uint8_t>(rule[0].unsigned_int(32));
-        p.password_max_length = static_cast<std::uint8_t>(rule[1].unsigned_int(32));
-        if (p.password_min_length == 0 || p.password_min_length > p.password_max_length)
-            rule.fail("min must be 1..max", "write e.g. [6, 32] (iQ-R) or [4, 4] (Q/L)");
-    }
+    if (root.has("remote_password_length")) password_length(root["remote_password_length"], p);
     parse_file_drives(root, p, port);
     return profile;
 }

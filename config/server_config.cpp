@@ -21,10 +21,7 @@ namespace {
 PortConfig port(const JsonAt& at) {
     check_keys(at, Section::Port);
     PortConfig p;
-    auto transport = at["transport"].string();
-    if (transport == "tcp") p.transport = Transport::Tcp;
-    else if (transport == "udp") p.transport = Transport::Udp;
-    else at["transport"].fail("unknown transport '" + transport + "'", "use \"tcp\" or \"udp\"");
+    p.transport = choice_setting(at, Section::Port, "transport") == "tcp" ? Transport::Tcp : Transport::Udp;
     auto whole = [&](std::string_view key) { return static_cast<unsigned>(whole_setting(at, Section::Port, key)); };
     p.port = static_cast<std::uint16_t>(whole("port"));
     if (at.has("data_code")) p.data_code = parse_data_code(at["data_code"].string(), at["data_code"].pointer());
@@ -35,6 +32,7 @@ PortConfig port(const JsonAt& at) {
     if (at.has("remote_password")) p.remote_password = at["remote_password"].boolean();
     if (at.has("online_change")) p.online_change = at["online_change"].boolean();
     if (at.has("network") || at.has("station")) {
+        // Read up to a byte, then checked as a pair (checked_station_numbers).
         auto network = at.has("network") ? static_cast<unsigned>(at["network"].unsigned_int(255)) : 0u;
         auto station = at.has("station") ? static_cast<unsigned>(at["station"].unsigned_int(255)) : 0u;
         try {
@@ -53,6 +51,42 @@ HttpConfig http_config(const JsonAt& at) {
     if (at.has("port")) h.port = static_cast<std::uint16_t>(whole_setting(at, Section::Http, "port"));
     if (at.has("bind")) h.bind = at["bind"].string();
     return h;
+}
+
+// "ports", or its short form: only the port numbers ("tcp_port", "udp_port"); a transport left out is not served.
+void parse_ports(const JsonAt& root, ServerConfig& c) {
+    if (root.has("ports")) {
+        auto ports = root["ports"];
+        ports.expect_array();
+        c.ports.clear();
+        for (std::size_t i = 0; i < ports.json().size(); ++i) c.ports.push_back(port(ports[i]));
+    }
+    if (root.has("tcp_port") || root.has("udp_port")) {
+        if (root.has("ports"))
+            root["ports"].fail("\"ports\" and \"tcp_port\"/\"udp_port\" both given",
+                               "give one: \"ports\" for every port setting, or tcp_port/udp_port for the numbers");
+        c.ports.clear();
+        if (root.has("tcp_port"))
+            c.ports.push_back({Transport::Tcp, static_cast<std::uint16_t>(whole_setting(root, Section::Station, "tcp_port"))});
+        if (root.has("udp_port"))
+            c.ports.push_back({Transport::Udp, static_cast<std::uint16_t>(whole_setting(root, Section::Station, "udp_port"))});
+    }
+}
+
+// Proxy mode ("upstream") and, with it, differential mode ("compare"; docs/twin.md).
+void parse_upstream_keys(const JsonAt& root, ServerConfig& c) {
+    if (root.has("upstream")) {
+        c.upstream = root["upstream"].string();
+        if (!split_upstream(c.upstream)) root["upstream"].fail("'" + c.upstream + "' is not HOST:PORT", kUpstreamFix);
+    }
+    if (root.has("upstream_timeout_ms"))
+        c.upstream_timeout_ms = static_cast<unsigned>(whole_setting(root, Section::Station, "upstream_timeout_ms"));
+    if (root.has("compare")) c.compare = root["compare"].boolean();
+    if (root.has("compare_slack_ms"))
+        c.compare_slack_ms = static_cast<unsigned>(whole_setting(root, Section::Station, "compare_slack_ms"));
+    if (c.compare && c.upstream.empty())
+        root["compare"].fail("\"compare\" without \"upstream\"", "differential mode compares this station with its upstream: "
+                                                                   "give \"upstream\": \"HOST:PORT\" too, or drop \"compare\"");
 }
 
 }  // namespace
@@ -110,13 +144,16 @@ std::vector<InitialValue> parse_initial_values(const JsonAt& devices) {
 }
 
 protocol::StationNumbers checked_station_numbers(unsigned network, unsigned station, const std::string& where) {
-    // §3.1.3: network No. 01-EF (1-239), station No. 01-78 (1-120).
-    if (network < 1 || network > 239)
-        throw ConfigError(where + ": network No. " + std::to_string(network) +
-                          " is out of range; set \"network\" (--network-no) to 1-239 together with the station No.");
-    if (station < 1 || station > 120)
-        throw ConfigError(where + ": station No. " + std::to_string(station) +
-                          " is out of range; set \"station\" (--station-no) to 1-120 together with the network No.");
+    // The rows' ranges: network No. 01-EF (1-239), station No. 01-78 (1-120).
+    const auto& net = setting(Section::Port, "network");
+    const auto& sta = setting(Section::Port, "station");
+    auto range = [](const Setting& row) { return std::to_string(unsigned(row.min)) + "-" + std::to_string(unsigned(row.max)); };
+    if (network < net.min || network > net.max)
+        throw ConfigError(where + ": network No. " + std::to_string(network) + " is out of range; set \"network\" (--network-no) to " +
+                          range(net) + " together with the station No.");
+    if (station < sta.min || station > sta.max)
+        throw ConfigError(where + ": station No. " + std::to_string(station) + " is out of range; set \"station\" (--station-no) to " +
+                          range(sta) + " together with the network No.");
     return {static_cast<std::uint8_t>(network), static_cast<std::uint8_t>(station)};
 }
 
@@ -144,43 +181,12 @@ ServerConfig parse_server_config(const JsonAt& root, const std::filesystem::path
     if (root.has("devices") || root.has("labels") || root.has("cpu"))
         numbering.emplace(load_profile(c.profile).cpu.numbering);
     if (root.has("bind")) c.bind = root["bind"].string();
-    if (root.has("ports")) {
-        auto ports = root["ports"];
-        ports.expect_array();
-        c.ports.clear();
-        for (std::size_t i = 0; i < ports.json().size(); ++i) c.ports.push_back(port(ports[i]));
-    }
-    // The short form of "ports": only the port numbers; a transport left out is not served.
-    if (root.has("tcp_port") || root.has("udp_port")) {
-        if (root.has("ports"))
-            root["ports"].fail("\"ports\" and \"tcp_port\"/\"udp_port\" both given",
-                               "give one: \"ports\" for every port setting, or tcp_port/udp_port for the numbers");
-        c.ports.clear();
-        if (root.has("tcp_port"))
-            c.ports.push_back({Transport::Tcp, static_cast<std::uint16_t>(whole_setting(root, Section::Station, "tcp_port"))});
-        if (root.has("udp_port"))
-            c.ports.push_back({Transport::Udp, static_cast<std::uint16_t>(whole_setting(root, Section::Station, "udp_port"))});
-    }
+    parse_ports(root, c);
     if (root.has("max_request_bytes")) c.max_request_bytes = whole_setting(root, Section::Station, "max_request_bytes");
-    if (root.has("upstream")) {
-        c.upstream = root["upstream"].string();
-        if (!split_upstream(c.upstream)) root["upstream"].fail("'" + c.upstream + "' is not HOST:PORT", kUpstreamFix);
-    }
-    if (root.has("upstream_timeout_ms"))
-        c.upstream_timeout_ms = static_cast<unsigned>(whole_setting(root, Section::Station, "upstream_timeout_ms"));
-    if (root.has("compare")) c.compare = root["compare"].boolean();
-    if (root.has("compare_slack_ms"))
-        c.compare_slack_ms = static_cast<unsigned>(whole_setting(root, Section::Station, "compare_slack_ms"));
-    if (c.compare && c.upstream.empty())
-        root["compare"].fail("\"compare\" without \"upstream\"", "differential mode compares this station with its upstream: "
-                                                                   "give \"upstream\": \"HOST:PORT\" too, or drop \"compare\"");
+    parse_upstream_keys(root, c);
     if (root.has("device_sizes")) c.device_sizes = parse_device_sizes(root["device_sizes"]);
     if (root.has("devices")) c.devices = parse_initial_values(root["devices"]);
-    if (root.has("log_level")) {
-        c.log_level = root["log_level"].string();
-        if (!valid_log_level(c.log_level))
-            root["log_level"].fail("unknown log level '" + c.log_level + "'", "use trace, debug, info, warn, error or off");
-    }
+    if (root.has("log_level")) c.log_level = choice_setting(root, Section::Station, "log_level");
     if (root.has("http")) c.http = http_config(root["http"]);
     if (root.has("timing")) c.timing = parse_timing_config(root["timing"]);
     if (root.has("scenarios")) {

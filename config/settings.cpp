@@ -1,8 +1,6 @@
 // The settings table (config/settings.hpp) and what is generated from it.
 #include "config/settings.hpp"
 
-#include "frontends/face.hpp"
-
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -81,7 +79,7 @@ constexpr Setting kSettings[] = {
      .default_text = "\"0.0.0.0\"", .help = "address to listen on (default 0.0.0.0)",
      .doc = "IP address to listen on"},
     {.section = S::Station, .key = "ports", .flag = "", .type = T::Array, .default_text = "TCP 5000 and UDP 5000",
-     .help = "one object per port (below)"},
+     .help = "one object per port (below)", .holds = S::Port},
     {.section = S::Station, .key = "tcp_port", .flag = "tcp-port", .type = T::Integer, .flag_arg = F::UnsignedList,
      .min = 0, .max = 65535, .help = "TCP port(s) to serve; 0 = any free port (default 5000)",
      .fix = "use 0-65535 (0 = any free port)",
@@ -131,20 +129,65 @@ constexpr Setting kSettings[] = {
     {.section = S::Station, .key = "devices", .flag = "", .type = T::Object, .default_text = "—",
      .help = "initial values by address (below)"},
     {.section = S::Station, .key = "modules", .flag = "", .type = T::Array, .default_text = "none",
-     .help = "intelligent function modules with buffer memory ([below](#modules-networks-and-cpus))"},
+     .help = "intelligent function modules with buffer memory ([below](#modules-networks-and-cpus))", .holds = S::Module},
     {.section = S::Station, .key = "networks", .flag = "", .type = T::Array, .default_text = "none",
-     .help = "network modules and their link devices ([below](#modules-networks-and-cpus))"},
+     .help = "network modules and their link devices ([below](#modules-networks-and-cpus))", .holds = S::Network},
     {.section = S::Station, .key = "cpus", .flag = "", .type = T::Array, .default_text = "none",
-     .help = "CPU No.2–4 of a multi-CPU system ([below](#modules-networks-and-cpus))"},
+     .help = "CPU No.2–4 of a multi-CPU system ([below](#modules-networks-and-cpus))", .holds = S::MultiCpu},
     {.section = S::Station, .key = "redundant", .flag = "", .type = T::Object, .default_text = "none",
      .help = "one CPU of a redundant pair: `{\"pair\": \"press-b\", \"system\": \"A\"}` "
              "([plants.md](plants.md#redundant-pairs))"},
     {.section = S::Station, .key = "multidrop", .flag = "", .type = T::Object, .default_text = "none",
      .help = "a multidrop station behind another station's serial module: `{\"via\": \"line-1\", \"start_io\": "
              "\"0040\", \"number\": 3}` ([plants.md](plants.md#multidrop-stations))"},
+
+    // --- "modules", "networks", "cpus": what is mounted beside CPU No.1 (hardware_config.cpp) --------------------------
+    // The order of each object's rows is the order its unknown-key error lists them.
+    {.section = S::Module, .key = "start_io", .flag = "", .type = T::String, .default_text = "required",
+     .help = "the module's start I/O number, 4 hex digits (`\"0030\"` → reached as `U3\\G…`, Extend Unit module number "
+             "0003)", .required = true},
+    {.section = S::Module, .key = "model", .flag = "", .type = T::String, .default_text = "—", .help = "a name, for logs"},
+    {.section = S::Module, .key = "buffer_words", .flag = "", .type = T::Integer, .max = 16 * 1024 * 1024,
+     .default_text = "required", .help = "buffer memory size in words", .doc_type = "number", .required = true,
+     .plain_range = true},
+    {.section = S::Module, .key = "head_address", .flag = "", .type = T::String, .default_text = "0",
+     .help = "Extend Unit (0601/1601) start address of buffer word 0, hex — from the module table of the SLMP Reference "
+             "Manual §5.5 (e.g. `\"1008\"` for a Q62DA). Module numbers 03E0–03E3 need no entry: they reach the CPU "
+             "buffer memory of CPU No.1–4 (real-CPU measurements) with head address 0 (**chosen**: byte address = "
+             "buffer word × 2)"},
+    {.section = S::Network, .key = "number", .flag = "", .type = T::Integer, .min = 1, .max = 239,
+     .default_text = "required", .help = "network No. 1–239, reached as `J1\\W100`", .fix = "use 1-239",
+     .doc_type = "number", .required = true, .below_min = "network numbers start at 1", .plain_range = true},
+    {.section = S::Network, .key = "station", .flag = "", .type = T::Integer, .min = 1, .max = 120,
+     .default_text = "not set",
+     .help = "the station No. (1–120) of this station's module on that network: requests routed through another "
+             "station's network/Ethernet module reach this CPU by it ([plants.md](plants.md#networks-and-routes)); not "
+             "set: the link devices only",
+     .fix = "use 1-120", .doc_type = "number", .below_min = "station numbers start at 1", .plain_range = true},
+    {.section = S::Network, .key = "master", .flag = "", .type = T::Boolean, .default_text = "the lowest station No.",
+     .help = "`true`: this station is the network's control/master station (routes with station No. 7D/7E); one a "
+             "network"},
+    {.section = S::Network, .key = "send", .flag = "", .type = T::Array,
+     .default_text = "256 LB and 256 LW from (station − 1) × 256",
+     .help = "the LB/LW ranges this station sends to the network's other stations at each link scan, e.g. "
+             "`[\"W100-W1FF\", \"B100-B1FF\"]` (B in whole words) ([plants.md](plants.md#link-devices))"},
+    {.section = S::Network, .key = "device_sizes", .flag = "", .type = T::Object,
+     .default_text = "16384, 16384, 32768, 512, 131072, 512", .help = "link device sizes: X, Y, B, SB, W, SW"},
+    {.section = S::MultiCpu, .key = "number", .flag = "", .type = T::Integer, .min = 2, .max = 4,
+     .default_text = "required", .help = "2, 3 or 4: reached with module I/O 03E1–03E3 (03E0 and 03FF are CPU No.1)",
+     .fix = "use 2, 3 or 4", .doc_type = "number", .required = true,
+     .below_min = "CPU No.1 is the one configured at the top level", .plain_range = true},
+    {.section = S::MultiCpu, .key = "profile", .flag = "", .type = T::String, .default_text = "required",
+     .help = "as at the top level, for that CPU", .required = true},
+    {.section = S::MultiCpu, .key = "device_sizes", .flag = "", .type = T::Object, .default_text = "the profile's",
+     .help = "as at the top level, for that CPU"},
+    {.section = S::MultiCpu, .key = "devices", .flag = "", .type = T::Object, .default_text = "—",
+     .help = "as at the top level, for that CPU"},
+
     {.section = S::Station, .key = "log_level", .flag = "log-level,l", .type = T::Choice, .flag_arg = F::Text,
      .choices = "trace|debug|info|warn|error|off", .default_text = "\"info\"",
-     .help = "trace, debug, info, warn, error or off (default info)"},
+     .help = "trace, debug, info, warn, error or off (default info)",
+     .fix = "use trace, debug, info, warn, error or off", .noun = "log level"},
     {.section = S::Station, .key = "name", .flag = "", .type = T::String, .default_text = "—",
      .help = "the station's name in a plant ([plants.md](plants.md))"},
     {.section = S::Station, .key = "scenarios", .flag = "scenario", .type = T::Array, .flag_arg = F::TextList,
@@ -152,16 +195,50 @@ constexpr Setting kSettings[] = {
      .help = "run a scenario file (values that move, logic, faults, replay); repeatable (docs/scenarios.md)",
      .doc = "scenario files to run, relative to this file (added to `--scenario`)", .doc_type = "array of paths"},
     {.section = S::Station, .key = "http", .flag = "", .type = T::Object, .default_text = "on, port 8080",
-     .help = "the HTTP API, metrics and web monitor ([below](#http-api-http))"},
+     .help = "the HTTP API, metrics and web monitor ([below](#http-api-http))", .holds = S::Http},
     {.section = S::Station, .key = "cpu", .flag = "", .type = T::Object, .default_text = "none",
-     .help = "the running CPU ([below](#the-running-cpu-cpu))"},
+     .help = "the running CPU ([below](#the-running-cpu-cpu))", .holds = S::Cpu},
     {.section = S::Station, .key = "labels", .flag = "labels", .type = T::Array, .flag_arg = F::TextList,
      .default_text = "none",
      .help = "declare global labels from this JSON or GX Works3 CSV file; repeatable (docs/labels.md)",
      .doc = "global labels: a list, or the name of a GX Works3 CSV file ([labels.md](labels.md))",
-     .doc_type = "array or string"},
+     .doc_type = "array or string", .holds = S::Label, .also = S::LabelsFile},
     {.section = S::Station, .key = "structures", .flag = "", .type = T::Array, .default_text = "none",
-     .help = "structure types of the global labels ([labels.md](labels.md))"},
+     .help = "structure types of the global labels ([labels.md](labels.md))", .holds = S::Structure, .also = S::LabelsFile},
+
+    // --- "labels", "structures" (label_config.cpp; [labels.md](labels.md)) ------------------------------------------------
+    {.section = S::Label, .key = "name", .flag = "", .type = T::String, .default_text = "required",
+     .help = "letters, digits, `_` (and non-ASCII letters), not starting with a digit, not a device name (`D100`, "
+             "`X1F`, `K4M0`); case-sensitive",
+     .required = true},
+    {.section = S::Label, .key = "type", .flag = "", .type = T::String, .default_text = "required",
+     .help = "a type below, optionally with an array part `(0..n)`, `(0..n,0..m)`, `(0..n,0..m,0..k)` (lower bound 0)",
+     .required = true},
+    {.section = S::Label, .key = "device", .flag = "", .type = T::String, .default_text = "the label area",
+     .help = "the device the label is assigned to; without it the label lives in the CPU's label area"},
+    {.section = S::Label, .key = "dims", .flag = "", .type = T::Array, .default_text = "—",
+     .help = "the array sizes instead: `[20]`, `[2, 20]`, 1–3 dimensions of 1–65536 — not together with an array "
+             "part in `type`"},
+    {.section = S::Label, .key = "external", .flag = "", .type = T::Boolean, .default_text = "`true`",
+     .help = "\"Access from External Device\"; **default `true` in slmp-sim** (GX Works3's default is off — a "
+             "simulator is there to be read). `false`: SLMP answers 40C0, as a real CPU does"},
+    {.section = S::Label, .key = "comment", .flag = "", .type = T::String, .default_text = "—",
+     .help = "allowed on labels, structures and members; ignored"},
+    {.section = S::Structure, .key = "name", .flag = "", .type = T::String, .default_text = "required",
+     .help = "a structure type's name, the `type` of labels and members of it. A structure may use only structures "
+             "declared before it",
+     .required = true},
+    {.section = S::Structure, .key = "members", .flag = "", .type = T::Array, .default_text = "required",
+     .help = "its members (below)", .required = true, .holds = S::Member},
+    {.section = S::Structure, .key = "comment", .flag = "", .type = T::String, .default_text = "—",
+     .help = "ignored"},
+    {.section = S::Member, .key = "name", .flag = "", .type = T::String, .default_text = "required",
+     .help = "as a label's", .required = true},
+    {.section = S::Member, .key = "type", .flag = "", .type = T::String, .default_text = "required",
+     .help = "as a label's", .required = true},
+    {.section = S::Member, .key = "dims", .flag = "", .type = T::Array, .default_text = "—", .help = "as a label's"},
+    {.section = S::Member, .key = "comment", .flag = "", .type = T::String, .default_text = "—", .help = "ignored"},
+
     {.section = S::Station, .key = "state_dir", .flag = "state-dir", .type = T::String, .flag_arg = F::Text,
      .default_text = "none", .help = "keep device memory here across restarts (see docs/cpu-runtime.md)",
      .doc = "keep device memory here (`--state-dir`); nothing touches disk without it; file drives without a "
@@ -175,9 +252,19 @@ constexpr Setting kSettings[] = {
             "([files.md](files.md))",
      .doc_type = "`{\"4\": {\"dir\": \"plc-data\", \"capacity\": 4194304, \"write_protect\": false, \"present\": "
                  "true, \"passwords\": {\"LINE.CSV\": \"secret1\"}}}`",
-     .doc_table = "cpu"},
+     .doc_table = "cpu", .holds = S::Drive},
+    {.section = S::Drive, .key = "dir", .flag = "", .type = T::String, .default_text = "memory",
+     .help = "the host folder that holds the drive's files (must exist)"},
+    {.section = S::Drive, .key = "capacity", .flag = "", .type = T::Integer, .max = 1099511627776.0,
+     .default_text = "the family's", .help = "capacity in bytes", .plain_range = true},
+    {.section = S::Drive, .key = "write_protect", .flag = "", .type = T::Boolean, .default_text = "the family's",
+     .help = "the SD card's LOCK switch"},
+    {.section = S::Drive, .key = "present", .flag = "", .type = T::Boolean,
+     .default_text = "the family's (`true` with `dir`)", .help = "a card is in the slot"},
+    {.section = S::Drive, .key = "passwords", .flag = "", .type = T::Object, .default_text = "none",
+     .help = "file passwords by file name: `{\"LINE.CSV\": \"secret1\"}`"},
     {.section = S::Station, .key = "timing", .flag = "", .type = T::Object, .default_text = "`{\"mode\": \"instant\"}`",
-     .help = "when answers leave ([below](#timing-timing), [timing.md](timing.md))", .doc_table = "cpu"},
+     .help = "when answers leave ([below](#timing-timing), [timing.md](timing.md))", .doc_table = "cpu", .holds = S::Timing},
     {.section = S::Station, .key = "clock_speed", .flag = "clock-speed", .type = T::Number, .flag_arg = F::Real,
      .min = 0.01, .max = 1000, .default_text = "1",
      .help = "run the CPU's clock (scan, timers, scenarios) this many times faster than real time (default 1)",
@@ -191,11 +278,11 @@ constexpr Setting kSettings[] = {
     {.section = S::Station, .key = "restore", .flag = "", .type = T::Choice, .choices = "latched|all",
      .default_text = "\"latched\"",
      .help = "what a restart brings back: latched devices only (a power cycle) or everything saved",
-     .doc_table = "cpu"},
+     .fix = "use \"latched\" or \"all\"", .doc_table = "cpu", .noun = "restore mode"},
 
     // --- "ports": [ {...} ] ------------------------------------------------------------------------------------------
     {.section = S::Port, .key = "transport", .flag = "", .type = T::Choice, .choices = "tcp|udp",
-     .default_text = "required", .help = "", .required = true},
+     .default_text = "required", .help = "", .fix = "use \"tcp\" or \"udp\"", .required = true, .noun = "transport"},
     {.section = S::Port, .key = "port", .flag = "", .type = T::Integer, .min = 0, .max = 65535,
      .default_text = "required", .help = "`0` = any free port (read it back from `--ready-file`)",
      .fix = "use 0-65535 (0 = any free port)", .required = true},
@@ -287,7 +374,11 @@ constexpr Setting kSettings[] = {
      .help = "remote password; length per the profile's `remote_password_length`"},
     {.section = S::Cpu, .key = "password_lockout", .flag = "", .type = T::Object, .default_text = "10, 60",
      .help = "wrong passwords in a row before C815, and for how long; `attempts: 0` never locks out",
-     .doc_type = "`{\"attempts\": N, \"seconds\": S}`"},
+     .doc_type = "`{\"attempts\": N, \"seconds\": S}`", .holds = S::Lockout},
+    {.section = S::Lockout, .key = "attempts", .flag = "", .type = T::Integer, .max = 1000, .default_text = "10",
+     .help = "wrong passwords in a row before C815; `0` never locks out", .plain_range = true},
+    {.section = S::Lockout, .key = "seconds", .flag = "", .type = T::Integer, .max = 86400, .default_text = "60",
+     .help = "how long the lock-out lasts", .plain_range = true},
     {.section = S::Cpu, .key = "system_protect", .flag = "", .type = T::Boolean, .default_text = "`false`",
      .help = "the CPU's system protect (security key / write protection): on every port, writes and remote "
              "operations (1001–1006) answer the profile's `end_codes.system_protect` (4004) and change nothing; "
@@ -299,18 +390,33 @@ constexpr Setting kSettings[] = {
     {.section = S::Cpu, .key = "timers", .flag = "", .type = T::Array, .default_text = "none",
      .help = "timers that time while their coil is on (T, ST, LT, LST; `base_ms` 0.001–1000, default 100, LT/LST "
              "0.001)",
-     .doc_type = "`[{\"device\": \"T0\", \"points\": 1, \"preset\": 20, \"base_ms\": 100}]`"},
+     .doc_type = "`[{\"device\": \"T0\", \"points\": 1, \"preset\": 20, \"base_ms\": 100}]`", .holds = S::Timer},
+    {.section = S::Timer, .key = "device", .flag = "", .type = T::String, .default_text = "required",
+     .help = "the first device: T, ST, LT or LST for a timer, C or LC for a counter (`\"T0\"`, `\"C10\"`)",
+     .required = true, .also = S::Counter},
+    {.section = S::Timer, .key = "points", .flag = "", .type = T::Integer, .max = 0x7FFFFFFF, .default_text = "1",
+     .help = "how many devices from it", .also = S::Counter, .plain_range = true},
+    {.section = S::Timer, .key = "preset", .flag = "", .type = T::Integer, .default_text = "required",
+     .help = "the set value: up to 32767, on LT, LST and LC up to 4294967295", .required = true, .own_check = true,
+     .also = S::Counter},
+    {.section = S::Timer, .key = "base_ms", .flag = "", .type = T::Number, .min = 0.001, .max = 1000,
+     .default_text = "100 (LT, LST: 0.001)", .help = "a timer's time base in ms",
+     .fix = "use 0.001 to 1000 (100 low-speed, 10 high-speed, 1)"},
     {.section = S::Cpu, .key = "counters", .flag = "", .type = T::Array, .default_text = "none",
      .help = "counters that count coil rising edges (C, LC)",
-     .doc_type = "`[{\"device\": \"C0\", \"points\": 1, \"preset\": 5}]`"},
+     .doc_type = "`[{\"device\": \"C0\", \"points\": 1, \"preset\": 5}]`", .holds = S::Counter},
     {.section = S::Cpu, .key = "program", .flag = "", .type = T::Object, .default_text = "none",
      .help = "the PLC program the CPU runs scan by scan (`--program FILE` sets `file`); every key: "
              "[program.md](program.md#configuration)",
-     .doc_type = "`{\"file\": \"line1.csv\", \"operation_error\": \"stop\", \"wdt_ms\": 200, ...}`"},
+     .doc_type = "`{\"file\": \"line1.csv\", \"operation_error\": \"stop\", \"wdt_ms\": 200, ...}`", .holds = S::Program},
     {.section = S::Cpu, .key = "error", .flag = "", .type = T::Object, .default_text = "none",
      .help = "a CPU error present from the start (SD0/SM0; `stop: true` keeps the CPU in STOP until a Remote "
              "RESET)",
-     .doc_type = "`{\"code\": \"1900\", \"stop\": false}`"},
+     .doc_type = "`{\"code\": \"1900\", \"stop\": false}`", .holds = S::CpuError},
+    {.section = S::CpuError, .key = "code", .flag = "", .type = T::String, .default_text = "required",
+     .help = "the error code, 4 hex digits (`\"1900\"`)", .required = true},
+    {.section = S::CpuError, .key = "stop", .flag = "", .type = T::Boolean, .default_text = "`false`",
+     .help = "`true`: a stop error, the CPU stays in STOP until a Remote RESET"},
 
     // --- "cpu": {"program": {...}} -------------------------------------------------------------------------------------
     {.section = S::Program, .key = "file", .flag = "program", .type = T::String, .flag_arg = F::Text,
@@ -322,21 +428,24 @@ constexpr Setting kSettings[] = {
      .help = "device comments (GX Works CSV); relative paths as `file`", .doc = "device comment file"},
     {.section = S::Program, .key = "operation_error", .flag = "", .type = T::Choice, .choices = "stop|continue",
      .default_text = "\"stop\"", .help = "what an operation error does: stop the CPU or continue the scan",
+     .fix = "use \"stop\" or \"continue\"",
      .doc = "`stop`: an operation error ends the scan and stops the CPU (stop error, SD203 = 0x0042, Y off, Remote "
             "RUN answers C05F until RESET); `continue`: SM0/SM1 (and SM56 on Q/L) and SD0 are set, the failing "
-            "instruction does nothing, execution goes on; 1617 Clear Error clears them"},
+            "instruction does nothing, execution goes on; 1617 Clear Error clears them", .noun = "mode"},
     {.section = S::Program, .key = "wdt_ms", .flag = "", .type = T::Integer, .min = 10, .max = 2000,
      .default_text = "200", .help = "the scan's watchdog time, in steps of 10 ms",
      .fix = "use 10 to 2000 in steps of 10 (default 200)",
-     .doc = "watchdog, 10–2000 in steps of 10, on the **modelled** execution time (below)", .own_check = true},
+     .doc = "watchdog, 10–2000 in steps of 10, on the **modelled** execution time (below)",
+     .below_min = "out of range", .plain_range = true, .step = 10},
     {.section = S::Program, .key = "timer_limit", .flag = "", .type = T::Object,
      .default_text = "`{\"low_ms\": 100, \"high_ms\": 10}`",
-     .help = "the time bases of `OUT T` and `OUTH T` (below)"},
+     .help = "the time bases of `OUT T` and `OUTH T` (below)", .holds = S::TimerLimit},
     {.section = S::Program, .key = "output_mode_at_run", .flag = "", .type = T::Choice,
      .choices = "previous|recalculate", .default_text = "\"previous\"",
      .help = "the outputs when STOP turns to RUN: as before STOP, or as the first scan computes them",
+     .fix = "use \"previous\" or \"recalculate\"",
      .doc = "at STOP→RUN: `previous` puts back the Y image saved at STOP before scan 1; `recalculate` leaves Y off "
-            "until the program writes them. A Remote RUN with a clear mode clears the saved image too."},
+            "until the program writes them. A Remote RUN with a clear mode clears the saved image too.", .noun = "mode"},
     {.section = S::Program, .key = "max_steps_per_scan", .flag = "", .type = T::Integer, .min = 1000,
      .max = 1'000'000'000, .default_text = "10000000",
      .help = "a scan that runs more steps (a loop that does not end) is a watchdog error",
@@ -354,23 +463,25 @@ constexpr Setting kSettings[] = {
     // --- "timing" ----------------------------------------------------------------------------------------------------
     {.section = S::Timing, .key = "mode", .flag = "timing", .type = T::Choice, .flag_arg = F::Text,
      .choices = "instant|end_of_scan|model", .default_text = "\"instant\"",
-     .help = "when answers leave: instant (default), end_of_scan or model (docs/timing.md)"},
+     .help = "when answers leave: instant (default), end_of_scan or model (docs/timing.md)",
+     .fix = "use \"instant\" (default), \"end_of_scan\" or \"model\"", .noun = "timing mode"},
     {.section = S::Timing, .key = "ke_ms", .flag = "", .type = T::Number, .min = 0, .max = 60000,
      .default_text = "the profile's", .help = "model: Ke, the fixed part of a response (both codes)",
-     .fix = "use 0 to 60000 ms"},
+     .fix = "use 0 to 60000 ms", .also = S::ProfileTiming},
     {.section = S::Timing, .key = "ke_ascii_ms", .flag = "", .type = T::Number, .min = 0, .max = 60000,
-     .default_text = "the profile's", .help = "model: Ke for ASCII frames", .fix = "use 0 to 60000 ms"},
+     .default_text = "the profile's", .help = "model: Ke for ASCII frames", .fix = "use 0 to 60000 ms", .also = S::ProfileTiming},
     {.section = S::Timing, .key = "kdt_ms", .flag = "", .type = T::Number, .min = 0, .max = 100,
-     .default_text = "the profile's", .help = "model: Kdt, the time a device point adds", .fix = "use 0 to 100 ms"},
+     .default_text = "the profile's", .help = "model: Kdt, the time a device point adds", .fix = "use 0 to 100 ms", .also = S::ProfileTiming},
     {.section = S::Timing, .key = "kdt_ascii_ms", .flag = "", .type = T::Number, .min = 0, .max = 100,
-     .default_text = "the profile's", .help = "model: Kdt for ASCII frames", .fix = "use 0 to 100 ms"},
+     .default_text = "the profile's", .help = "model: Kdt for ASCII frames", .fix = "use 0 to 100 ms", .also = S::ProfileTiming},
     {.section = S::Timing, .key = "scan_wait", .flag = "", .type = T::Boolean, .default_text = "the profile's",
-     .help = "model: the answer also waits for the END of the scan"},
+     .help = "model: the answer also waits for the END of the scan", .also = S::ProfileTiming},
     {.section = S::Timing, .key = "jitter", .flag = "", .type = T::Number, .min = 0, .max = 1, .default_text = "0",
      .help = "model: ± this fraction of the modelled time, at random",
      .fix = "use 0 (none) to 1 (± the whole modelled time), e.g. 0.1"},
-    {.section = S::Timing, .key = "seed", .flag = "", .type = T::Integer, .min = 0, .max = 18446744073709551615.0,
-     .default_text = "1", .help = "model: the jitter's random stream: the same seed, the same times", .own_check = true},
+    {.section = S::Timing, .key = "seed", .flag = "", .type = T::Integer, .min = 0, .max = kAnyUnsigned,
+     .default_text = "1", .help = "model: the jitter's random stream: the same seed, the same times",
+     .plain_range = true},
 
     // --- a CPU profile (config/profiles/*.json; profile_loader.cpp) -----------------------------------------------------
     {.section = S::Profile, .key = "name", .flag = "", .type = T::String, .default_text = "required", .help = "the profile id (the `--profile` name of a built-in one is its file name)", .required = true},
@@ -380,50 +491,165 @@ constexpr Setting kSettings[] = {
     {.section = S::Profile, .key = "model_code", .flag = "", .type = T::String, .default_text = "required", .help = "what Read Type Name (0101) answers: a 4-hex-digit code", .required = true},
     {.section = S::Profile, .key = "family", .flag = "", .type = T::Choice, .choices = "iQ-R|QnU|L|QJ71E71|iQ-F", .default_text = "required", .help = "the command table says which commands each family serves (QnU/L built-in ports refuse 0101, 0406/1406, 0619, 0613/1613; iQ-F refuses 0801/0802, 0613/1613 — real-CPU measurements)", .required = true},
     {.section = S::Profile, .key = "frame_4e", .flag = "", .type = T::String, .default_text = "required", .help = "how a 4E request is treated: `answer`, `silence` (no response), `close` (close the TCP connection) or an end code such as `\"C059\"`", .required = true},
-    {.section = S::Profile, .key = "frame_1e", .flag = "", .type = T::Object, .help = "`{\"pc_type\": \"0041\"}`: the port serves the A-compatible 1E frame, binary and ASCII, and 1E PC type read answers the low byte of `pc_type`; without it 1E bytes are no frame there (skipped unanswered, as on an iQ-R built-in port). [frames.md](frames.md)"},
+    {.section = S::Profile, .key = "frame_1e", .flag = "", .type = T::Object, .help = "`{\"pc_type\": \"0041\"}`: the port serves the A-compatible 1E frame, binary and ASCII, and 1E PC type read answers the low byte of `pc_type`; without it 1E bytes are no frame there (skipped unanswered, as on an iQ-R built-in port). [frames.md](frames.md)", .holds = S::Frame1E},
+    {.section = S::Frame1E, .key = "pc_type", .flag = "", .type = T::String, .default_text = "required",
+     .help = "1E PC type read's answer, one byte as 4 hex digits (`\"0041\"`)", .required = true},
     {.section = S::Profile, .key = "station_extended_frame", .flag = "", .type = T::Boolean, .default_text = "`false`", .help = "`true`: the port serves the station-number-extended frame (`68 00`, binary; CC-Link IE TSN modules, profile `RJ71GN11-T2`); without it those bytes are no frame there. [frames.md](frames.md)"},
     {.section = S::Profile, .key = "relays", .flag = "", .type = T::Boolean, .default_text = "`false`", .help = "`true`: the port is a network/Ethernet module's (RJ71EN71, QJ71E71-100, RJ71GN11-T2), which relays a request naming another network/station of the plant to that station's CPU; a CPU's built-in port (`false`) reaches only its own station. [plants.md](plants.md#networks-and-routes)"},
     {.section = S::Profile, .key = "node_commands", .flag = "", .type = T::Boolean, .default_text = "`false`", .help = "`true`: the port is an SLMP-compatible device's (the CC-Link Partner Association's manual, §3.12–3.14), which serves the node commands 0E30–0E53 (node search, IP address set, parameter get/set, status read); the Mitsubishi CPUs and modules of the built-in profiles are their clients and answer C059. [nodes.md](nodes.md)"},
-    {.section = S::Profile, .key = "pipeline", .flag = "", .type = T::Object, .default_text = "no limit", .help = "`{\"buffer\": N, \"over_limit\": \"CEE0\"}`: commands per connection — of a pipelined burst, 1 + N ÷ (open connections) requests are served, the rest get `over_limit` (an end code, `silence` or `close`; default CEE0). [end-codes.md](end-codes.md#commands-per-connection-pipelining-limit)"},
+    {.section = S::Profile, .key = "pipeline", .flag = "", .type = T::Object, .default_text = "no limit", .help = "`{\"buffer\": N, \"over_limit\": \"CEE0\"}`: commands per connection — of a pipelined burst, 1 + N ÷ (open connections) requests are served, the rest get `over_limit` (an end code, `silence` or `close`; default CEE0). [end-codes.md](end-codes.md#commands-per-connection-pipelining-limit)", .holds = S::Pipeline},
+    {.section = S::Pipeline, .key = "buffer", .flag = "", .type = T::Integer, .max = 65535, .default_text = "required",
+     .help = "N of 1 + N ÷ (open connections)", .required = true, .plain_range = true},
+    {.section = S::Pipeline, .key = "over_limit", .flag = "", .type = T::String, .default_text = "\"CEE0\"",
+     .help = "what a request over the limit gets: an end code, `silence` or `close`"},
     {.section = S::Profile, .key = "iqr_subcommands", .flag = "", .type = T::String, .default_text = "required", .help = "the same choice as `frame_4e` for device commands in the iQ-R form (00□2/00□3)", .required = true},
     {.section = S::Profile, .key = "unsupported_commands", .flag = "", .type = T::Array, .default_text = "none", .help = "further commands this port refuses with `end_codes.not_supported`, beyond what its family refuses"},
-    {.section = S::Profile, .key = "end_codes", .flag = "", .type = T::Object, .default_text = "required", .help = "`not_supported` (C059), `out_of_range` (4031 iQ-R, C056 Q/L), `not_accessible` (4030), `unknown_device` (C05B), `bad_unit` (C05C); optional `online_change_refused` (default 0055) and `system_protect` (default 4004)", .required = true},
+    {.section = S::Profile, .key = "end_codes", .flag = "", .type = T::Object, .default_text = "required", .help = "the end codes of the port's refusals (each below)", .required = true, .holds = S::EndCodes},
+    {.section = S::EndCodes, .key = "not_supported", .flag = "", .type = T::String, .default_text = "required",
+     .help = "a command this port does not serve (C059)", .required = true},
+    {.section = S::EndCodes, .key = "out_of_range", .flag = "", .type = T::String, .default_text = "required",
+     .help = "a device range past the area (4031 iQ-R, C056 Q/L)", .required = true},
+    {.section = S::EndCodes, .key = "not_accessible", .flag = "", .type = T::String, .default_text = "required",
+     .help = "a device this port may not write (4030)", .required = true},
+    {.section = S::EndCodes, .key = "unknown_device", .flag = "", .type = T::String, .default_text = "required",
+     .help = "a device code the CPU does not have (C05B)", .required = true},
+    {.section = S::EndCodes, .key = "bad_unit", .flag = "", .type = T::String, .default_text = "required",
+     .help = "a request for a module or CPU that is not there (C05C)", .required = true},
+    {.section = S::EndCodes, .key = "online_change_refused", .flag = "", .type = T::String, .default_text = "\"0055\"",
+     .help = "a write in RUN on a port without online change (default 0055)"},
+    {.section = S::EndCodes, .key = "system_protect", .flag = "", .type = T::String, .default_text = "\"4004\"",
+     .help = "a write or remote operation under system protect (default 4004)"},
     {.section = S::Profile, .key = "online_change", .flag = "", .type = T::Boolean, .default_text = "`true`", .help = "the ports' default for `online_change`"},
-    {.section = S::Profile, .key = "limits", .flag = "", .type = T::Object, .default_text = "required", .help = "`batch_words`, `batch_bits_binary`, `batch_bits_ascii`, `block_points` (`{\"max\": N, \"end_code\": \"C051\"}`); `random_read_points`, `random_write_weight`, `random_write_bits`, `monitor_points`, `block_count` (`{\"q\": N, \"iqr\": N, \"end_code\": \"C054\"}` — the limit for the Q form and the iQ-R form); `loopback_bytes`; optional `extended_over_limit_code`", .required = true},
+    {.section = S::Profile, .key = "limits", .flag = "", .type = T::Object, .default_text = "required", .help = "the port's limits per request (each below): a limit of points `{\"max\": N, \"end_code\": \"C051\"}`, or per request form `{\"q\": N, \"iqr\": N, \"end_code\": \"C054\"}` — the limit for the Q form and the iQ-R form", .required = true, .holds = S::Limits},
+    {.section = S::Limits, .key = "batch_words", .flag = "", .type = T::Object, .default_text = "required",
+     .help = "0401/1401 in word units: points", .doc_type = "`{\"max\": N, \"end_code\": \"C051\"}`", .required = true, .holds = S::PointLimit},
+    {.section = S::Limits, .key = "batch_bits_binary", .flag = "", .type = T::Object, .default_text = "required",
+     .help = "0401/1401 in bit units, binary code: points", .doc_type = "`{\"max\": N, \"end_code\": \"C051\"}`", .required = true, .holds = S::PointLimit},
+    {.section = S::Limits, .key = "batch_bits_ascii", .flag = "", .type = T::Object, .default_text = "required",
+     .help = "0401/1401 in bit units, ASCII code: points", .doc_type = "`{\"max\": N, \"end_code\": \"C051\"}`", .required = true, .holds = S::PointLimit},
+    {.section = S::Limits, .key = "loopback_bytes", .flag = "", .type = T::Integer, .max = 65535, .default_text = "required",
+     .help = "bytes of a loopback test (0619)", .required = true, .plain_range = true},
+    {.section = S::Limits, .key = "random_read_points", .flag = "", .type = T::Object, .default_text = "required",
+     .help = "0403: word + double-word points", .doc_type = "`{\"q\": N, \"iqr\": N, \"end_code\": \"C054\"}`", .required = true, .holds = S::FormLimit},
+    {.section = S::Limits, .key = "random_write_weight", .flag = "", .type = T::Object, .default_text = "required",
+     .help = "1402 in word units: 12 × words + 14 × double words", .doc_type = "`{\"q\": N, \"iqr\": N, \"end_code\": \"C054\"}`", .required = true, .holds = S::FormLimit},
+    {.section = S::Limits, .key = "random_write_bits", .flag = "", .type = T::Object, .default_text = "required",
+     .help = "1402 in bit units: points", .doc_type = "`{\"q\": N, \"iqr\": N, \"end_code\": \"C054\"}`", .required = true, .holds = S::FormLimit},
+    {.section = S::Limits, .key = "monitor_points", .flag = "", .type = T::Object, .default_text = "required",
+     .help = "0801: word + double-word points", .doc_type = "`{\"q\": N, \"iqr\": N, \"end_code\": \"C054\"}`", .required = true, .holds = S::FormLimit},
+    {.section = S::Limits, .key = "block_count", .flag = "", .type = T::Object, .default_text = "required",
+     .help = "0406/1406: word blocks + bit blocks", .doc_type = "`{\"q\": N, \"iqr\": N, \"end_code\": \"C054\"}`", .required = true, .holds = S::FormLimit},
+    {.section = S::Limits, .key = "block_points", .flag = "", .type = T::Object, .default_text = "required",
+     .help = "0406/1406: total points (1406 adds 4 or 9 per block)", .doc_type = "`{\"max\": N, \"end_code\": \"C051\"}`", .required = true, .holds = S::PointLimit},
+    {.section = S::Limits, .key = "extended_over_limit_code", .flag = "", .type = T::String, .default_text = "—",
+     .help = "what an over-limit random read, random write or monitor registration with extended devices (subcommand 008x) answers instead of the limit's own code (QJ71E71-100: 4080)"},
+    {.section = S::PointLimit, .key = "max", .flag = "", .type = T::Integer, .max = 65535, .default_text = "required",
+     .help = "the most points", .required = true, .plain_range = true},
+    {.section = S::FormLimit, .key = "q", .flag = "", .type = T::Integer, .max = 65535, .default_text = "required",
+     .help = "the most points in the Q form (00□0/00□1)", .required = true, .plain_range = true},
+    {.section = S::FormLimit, .key = "iqr", .flag = "", .type = T::Integer, .max = 65535, .default_text = "required",
+     .help = "the most points in the iQ-R form (00□2/00□3)", .required = true, .plain_range = true},
+    {.section = S::PointLimit, .key = "end_code", .flag = "", .type = T::String, .default_text = "required",
+     .help = "what a request over the limit answers", .required = true, .also = S::FormLimit},
     {.section = S::Profile, .key = "mixed_block_write", .flag = "", .type = T::String, .default_text = "required", .help = "1406 with word and bit blocks: `answer` or an end code (`\"C05B\"` R08CPU)", .required = true},
-    {.section = S::Profile, .key = "station_buffer_words", .flag = "", .type = T::Integer, .help = "0613/1613 reach a buffer of this many words of the port's own (QJ71E71-100) instead of the CPU buffer memory"},
+    {.section = S::Profile, .key = "station_buffer_words", .flag = "", .type = T::Integer, .max = 0x7FFFFFFF, .help = "0613/1613 reach a buffer of this many words of the port's own (QJ71E71-100) instead of the CPU buffer memory", .plain_range = true},
     {.section = S::Profile, .key = "device_sizes", .flag = "", .type = T::Object, .default_text = "required", .help = "points per area (areas left out do not exist on this CPU)", .required = true},
     {.section = S::Profile, .key = "start_only_range_check", .flag = "", .type = T::Array, .default_text = "required", .help = "areas where only the start device is range-checked (iQ-R: `R`, `ZR`)", .required = true},
     {.section = S::Profile, .key = "read_only_devices", .flag = "", .type = T::Array, .default_text = "required", .help = "areas that cannot be written over this port (`S`: 4030)", .required = true},
-    {.section = S::Profile, .key = "size_registers", .flag = "", .type = T::Array, .default_text = "required", .help = "`{\"device\": \"D\", \"sd\": 280, \"bits\": 32}`: the SD registers that publish each size", .required = true},
+    {.section = S::Profile, .key = "size_registers", .flag = "", .type = T::Array, .default_text = "required", .help = "`{\"device\": \"D\", \"sd\": 280, \"bits\": 32}`: the SD registers that publish each size", .required = true, .holds = S::SizeRegister},
+    {.section = S::SizeRegister, .key = "device", .flag = "", .type = T::String, .default_text = "required",
+     .help = "the device area whose size it publishes", .required = true},
+    {.section = S::SizeRegister, .key = "sd", .flag = "", .type = T::Integer, .max = 0xFFFF, .default_text = "required",
+     .help = "the SD register's number", .required = true, .plain_range = true},
+    {.section = S::SizeRegister, .key = "bits", .flag = "", .type = T::Integer, .max = 32, .default_text = "required",
+     .help = "16 or 32 (a pair of registers, low word first)", .required = true, .plain_range = true},
     {.section = S::Profile, .key = "zr_ascii_hex", .flag = "", .type = T::Boolean, .default_text = "required", .help = "`true` to number ZR in hexadecimal in ASCII frames (the manuals' form); iQ-R CPUs use decimal", .required = true},
     {.section = S::Profile, .key = "max_connections", .flag = "", .type = T::Integer, .min = 1, .max = 4096, .default_text = "64", .help = "the ports' default `max_connections`, the CPU's connection count ([Connections per port](#connections-per-port))", .fix = "write the CPU's connection count, e.g. 16"},
-    {.section = S::Profile, .key = "manual_vs_hardware", .flag = "", .type = T::Object, .help = "where the manuals and real CPUs differ, keyed by topic: `{\"mixed_block_write\": {\"what\": \"1406 with word and bit blocks together\", \"manual\": \"served\", \"hardware\": \"C05B (R08CPU)\", \"follows\": \"hardware\"}}`; `follows` is `manual` or `hardware`. A profile that extends another changes one topic key by key. Listed in [compatibility.md](compatibility.md#where-the-manuals-and-real-cpus-differ)"},
-    {.section = S::Profile, .key = "xy_radix", .flag = "", .type = T::Integer, .default_text = "16", .help = "`8` numbers X and Y (and DX/DY) in octal, as an iQ-F CPU does ([X/Y numbering](#xy-numbering-fx5-octal))"},
-    {.section = S::Profile, .key = "timing", .flag = "", .type = T::Object, .default_text = "see timing.md", .help = "`{\"ke_ms\": 3.9, \"ke_ascii_ms\": 3.9, \"kdt_ms\": 0.003, \"kdt_ascii_ms\": 0.0045, \"scan_wait\": true}`: the response-time model's constants for this CPU (sources in [timing.md](timing.md))"},
+    {.section = S::Profile, .key = "manual_vs_hardware", .flag = "", .type = T::Object, .help = "where the manuals and real CPUs differ, keyed by topic: `{\"mixed_block_write\": {\"what\": \"1406 with word and bit blocks together\", \"manual\": \"served\", \"hardware\": \"C05B (R08CPU)\", \"follows\": \"hardware\"}}`; `follows` is `manual` or `hardware`. A profile that extends another changes one topic key by key. Listed in [compatibility.md](compatibility.md#where-the-manuals-and-real-cpus-differ)", .holds = S::Difference},
+    {.section = S::Difference, .key = "what", .flag = "", .type = T::String, .default_text = "required",
+     .help = "the behaviour, in a few words", .required = true},
+    {.section = S::Difference, .key = "manual", .flag = "", .type = T::String, .default_text = "required",
+     .help = "what the manuals say", .required = true},
+    {.section = S::Difference, .key = "hardware", .flag = "", .type = T::String, .default_text = "required",
+     .help = "what the real CPU does", .required = true},
+    {.section = S::Difference, .key = "follows", .flag = "", .type = T::Choice, .choices = "manual|hardware",
+     .default_text = "required", .help = "which of the two the profile does", .required = true},
+    {.section = S::Profile, .key = "xy_radix", .flag = "", .type = T::Integer, .max = 16, .default_text = "16", .help = "`8` numbers X and Y (and DX/DY) in octal, as an iQ-F CPU does ([X/Y numbering](#xy-numbering-fx5-octal))", .plain_range = true},
+    {.section = S::Profile, .key = "timing", .flag = "", .type = T::Object, .default_text = "see timing.md", .help = "`{\"ke_ms\": 3.9, \"ke_ascii_ms\": 3.9, \"kdt_ms\": 0.003, \"kdt_ascii_ms\": 0.0045, \"scan_wait\": true}`: the response-time model's constants for this CPU (sources in [timing.md](timing.md))", .holds = S::ProfileTiming},
     {.section = S::Profile, .key = "file_drives", .flag = "", .type = T::Object, .default_text = "none", .help = "the CPU's file drives, keyed by number: `{\"2\": {\"kind\": \"sd_card\", \"capacity\": 8388608, \"present\": true, \"write_protect\": false}, \"1\": {\"kind\": \"device_label_memory\", \"alias_of\": 3}}`. `kind` is `program_memory`, `sram_card`, `sd_card`, `standard_ram`, `standard_rom`, `device_label_memory` or `data_memory`; `capacity` in bytes; `present` (default `true`) and `write_protect` (default `false`) are the defaults the configuration's `drives` may change. A profile that `extends` another changes one drive key by key and removes one with `null`. Without drives the port refuses the file commands (C059) ([files.md](files.md#drives-per-family))"},
     {.section = S::Profile, .key = "file_end_codes", .flag = "", .type = T::Object, .default_text = "with `file_drives`", .help = "the end code of each refused file operation — `no_drive`, `bad_name`, `not_found`, `exists`, `not_a_file`, `no_capacity`, `write_protected`, `read_only`, `locked`, `password`, `bad_pointer`, `not_write_mode`, `out_of_range`, `too_many_open`, `host_error`, `run_state` ([end-codes.md](end-codes.md#file-commands-1810182a))"},
     {.section = S::Profile, .key = "remote_password_length", .flag = "", .type = T::Array, .help = "`[min, max]` characters of the remote password: `[4, 4]` Q/L, `[6, 32]` iQ-R and iQ-F; without it 1630/1631 answer `not_supported` and `cpu.password` is refused"},
 };
 // clang-format on
 
-constexpr std::string_view kTables[] = {"cli", "station", "port", "http", "cpu", "program", "timing", "profile"};
+// Each object: its JSON path (errors and docs), the docs table its rows are
+// listed in, and whether it is the value of a key chosen by the user ("drives":
+// {"4": {...}}) rather than of a fixed key or an array entry.
+struct SectionInfo {
+    Section section;
+    std::string_view path;
+    std::string_view table;
+    bool keyed = false;
+};
+
+constexpr SectionInfo kSections[] = {
+    {S::None, "", ""},
+    {S::CommandLine, "(command line)", ""},
+    {S::Plant, "(plant)", ""},
+    {S::Station, "", "station"},
+    {S::Port, "ports[]", "port"},
+    {S::Module, "modules[]", "hardware"},
+    {S::Network, "networks[]", "hardware"},
+    {S::MultiCpu, "cpus[]", "hardware"},
+    {S::Drive, "drives.N", "cpu", true},
+    {S::Label, "labels[]", "labels"},
+    {S::Structure, "structures[]", "labels"},
+    {S::Member, "structures[].members[]", "labels"},
+    {S::LabelsFile, "(labels file)", ""},
+    {S::Http, "http", "http"},
+    {S::Cpu, "cpu", "cpu"},
+    {S::Lockout, "cpu.password_lockout", "cpu"},
+    {S::Timer, "cpu.timers[]", "cpu"},
+    {S::Counter, "cpu.counters[]", "cpu"},
+    {S::CpuError, "cpu.error", "cpu"},
+    {S::Program, "cpu.program", "program"},
+    {S::TimerLimit, "cpu.program.timer_limit", "program"},
+    {S::Timing, "timing", "timing"},
+    {S::Profile, "(profile)", "profile"},
+    {S::Frame1E, "frame_1e", "profile"},
+    {S::Pipeline, "pipeline", "profile"},
+    {S::EndCodes, "end_codes", "profile"},
+    {S::Limits, "limits", "profile"},
+    {S::PointLimit, "limits.*", "profile"},
+    {S::FormLimit, "limits.*", "profile"},
+    {S::ProfileTiming, "timing", "profile"},
+    {S::Difference, "manual_vs_hardware.TOPIC", "profile", true},
+    {S::SizeRegister, "size_registers[]", "profile"},
+};
+
+const SectionInfo& info(Section section) {
+    for (const auto& s : kSections)
+        if (s.section == section) return s;
+    throw std::logic_error("settings table: a section without its SectionInfo");
+}
+
+// The docs tables, and the path their keys are written from ("cpu.program":
+// the program table writes `wdt_ms`, not `cpu.program.wdt_ms`).
+struct DocTable {
+    std::string_view name;
+    std::string_view base;
+};
+constexpr DocTable kTables[] = {{"cli", ""},    {"station", ""}, {"port", "ports[]"},      {"hardware", ""},
+                                {"labels", ""}, {"http", "http"}, {"cpu", ""},            {"program", "cpu.program"},
+                                {"timing", "timing"}, {"profile", ""}};
 
 std::string_view table_of(const Setting& row) {
     if (!row.doc_table.empty()) return row.doc_table;
-    switch (row.section) {
-        case S::CommandLine: return "";
-        case S::Plant: return "";
-        case S::Station: return "station";
-        case S::Port: return "port";
-        case S::Http: return "http";
-        case S::Cpu: return "cpu";
-        case S::Program: return "program";
-        case S::TimerLimit: return "program";
-        case S::Timing: return "timing";
-        case S::Profile: return "profile";
-    }
-    return "";
+    return info(row.section).table;
+}
+
+bool in_section(const Setting& row, Section section) {
+    return section != S::None && !row.key.empty() && (row.section == section || row.also == section);
 }
 
 std::string number_text(double v) {
@@ -431,6 +657,10 @@ std::string number_text(double v) {
     std::ostringstream text;
     text << v;
     return text.str();
+}
+
+std::uint64_t whole_max(const Setting& row) {
+    return row.max >= kAnyUnsigned ? ~std::uint64_t{0} : static_cast<std::uint64_t>(row.max);
 }
 
 std::vector<std::string_view> choices_of(const Setting& row) {
@@ -462,11 +692,22 @@ std::string type_text(const Setting& row) {
     return "";
 }
 
-std::string key_text(const Setting& row) {
-    std::string prefix;
-    if (row.section == S::Cpu) prefix = "cpu.";
-    if (row.section == S::TimerLimit) prefix = "timer_limit.";
-    return "`" + prefix + std::string(row.key) + "`";
+// The key as a table lists it: its path from the table's base; a row that is a
+// key of another object of the same table too names both ("cpu.timers[].device",
+// "cpu.counters[].device").
+std::string key_text(const Setting& row, std::string_view table) {
+    std::string_view base;
+    for (const auto& t : kTables)
+        if (t.name == table) base = t.base;
+    auto path_in = [&](Section section) {
+        std::string path(info(section).path);
+        if (section == S::Plant || section == S::Profile) path.clear();
+        if (!base.empty() && path.starts_with(base)) path = path.substr(std::min(path.size(), base.size() + 1));
+        return "`" + (path.empty() ? "" : path + ".") + std::string(row.key) + "`";
+    };
+    auto text = path_in(row.section);
+    if (row.also != S::None && info(row.also).table == table && path_in(row.also) != text) text += ", " + path_in(row.also);
+    return text;
 }
 
 std::string default_cell(const Setting& row) {
@@ -486,19 +727,12 @@ std::string flag_cell(const Setting& row) {
     return text + "`";
 }
 
+// The --help table's "Key" column: the key's whole path.
 std::string key_path(const Setting& row) {
     if (row.key.empty()) return "—";
-    std::string prefix;
-    switch (row.section) {
-        case S::Port: prefix = "ports[]."; break;
-        case S::Http: prefix = "http."; break;
-        case S::Cpu: prefix = "cpu."; break;
-        case S::Program: prefix = "cpu.program."; break;
-        case S::TimerLimit: prefix = "cpu.program.timer_limit."; break;
-        case S::Timing: prefix = "timing."; break;
-        default: break;
-    }
-    return "`" + prefix + std::string(row.key) + "`";
+    std::string path(info(row.section).path);
+    if (row.section == S::Station || row.section == S::Plant) path.clear();
+    return "`" + (path.empty() ? "" : path + ".") + std::string(row.key) + "`";
 }
 
 nlohmann::json schema_of(const Setting& row);
@@ -507,7 +741,7 @@ nlohmann::json object_schema(Section section, std::span<const std::string_view> 
     nlohmann::json properties = nlohmann::json::object();
     nlohmann::json required = nlohmann::json::array();
     for (const auto& row : kSettings) {
-        if (row.section != section || row.key.empty()) continue;
+        if (!in_section(row, section)) continue;
         properties[std::string(row.key)] = schema_of(row);
         if (row.required) required.push_back(row.key);
     }
@@ -520,22 +754,11 @@ nlohmann::json object_schema(Section section, std::span<const std::string_view> 
 
 nlohmann::json schema_of(const Setting& row) {
     nlohmann::json s;
-    auto sub = [&](Section section) {
-        s = object_schema(section);
-        s["description"] = row.help;
-    };
-    if (row.section == S::Station && row.key == "ports") {
-        s = {{"type", "array"}, {"items", object_schema(S::Port)}};
-    } else if (row.section == S::Station && row.key == "http") {
-        sub(S::Http);
-    } else if (row.section == S::Station && row.key == "cpu") {
-        sub(S::Cpu);
-    } else if (row.section == S::Station && row.key == "timing") {
-        sub(S::Timing);
-    } else if (row.section == S::Cpu && row.key == "program") {
-        sub(S::Program);
-    } else if (row.section == S::Program && row.key == "timer_limit") {
-        sub(S::TimerLimit);
+    if (row.holds != S::None) {
+        auto object = object_schema(row.holds);
+        if (row.type == T::Array) s = {{"type", "array"}, {"items", object}};
+        else if (info(row.holds).keyed) s = {{"type", "object"}, {"additionalProperties", object}};
+        else s = object;
     } else {
         switch (row.type) {
             case T::String: s["type"] = "string"; break;
@@ -553,16 +776,17 @@ nlohmann::json schema_of(const Setting& row) {
             }
             case T::None: break;
         }
-        if (row.key == "labels") s.erase("type");   // a list, or the name of a CSV file
         // A template's port may be an expression in i ("20000+i"): plant_config.cpp resolves it first.
         if (row.key == "tcp_port" || row.key == "udp_port" || (row.section == S::Port && row.key == "port"))
             s["type"] = nlohmann::json::array({"integer", "string"});
-        if (row.has_range() && (row.type == T::Integer || row.type == T::Number) && !(row.key == "seed")) {
+        if (row.has_range() && (row.type == T::Integer || row.type == T::Number) && row.max < kAnyUnsigned) {
             s["minimum"] = row.type == T::Integer ? nlohmann::json(static_cast<std::uint64_t>(row.min)) : nlohmann::json(row.min);
             s["maximum"] = row.type == T::Integer ? nlohmann::json(static_cast<std::uint64_t>(row.max)) : nlohmann::json(row.max);
         }
-        s["description"] = row.help.empty() ? row.doc : row.help;
+        if (row.step) s["multipleOf"] = row.step;
     }
+    if (row.key == "labels") s.erase("type");   // a list, or the name of a CSV file
+    s["description"] = row.help.empty() ? row.doc : row.help;
     return s;
 }
 
@@ -572,7 +796,7 @@ std::span<const Setting> all_settings() { return kSettings; }
 
 const Setting& setting(Section section, std::string_view key) {
     for (const auto& row : kSettings)
-        if (row.section == section && row.key == key) return row;
+        if (in_section(row, section) && row.key == key) return row;
     throw std::logic_error("settings table: no row for key '" + std::string(key) + "'");
 }
 
@@ -585,25 +809,11 @@ const Setting* setting_by_flag(std::string_view flag) {
 std::vector<std::string_view> section_keys(Section section) {
     std::vector<std::string_view> keys;
     for (const auto& row : kSettings)
-        if (row.section == section && !row.key.empty()) keys.push_back(row.key);
+        if (in_section(row, section)) keys.push_back(row.key);
     return keys;
 }
 
-std::string_view section_name(Section section) {
-    switch (section) {
-        case S::CommandLine: return "(command line)";
-        case S::Plant: return "(plant)";
-        case S::Station: return "";
-        case S::Port: return "ports[]";
-        case S::Http: return "http";
-        case S::Cpu: return "cpu";
-        case S::Program: return "cpu.program";
-        case S::TimerLimit: return "cpu.program.timer_limit";
-        case S::Timing: return "timing";
-        case S::Profile: return "(profile)";
-    }
-    return "";
-}
+std::string_view section_name(Section section) { return info(section).path; }
 
 bool is_choice(const Setting& row, std::string_view value) {
     for (auto c : choices_of(row))
@@ -619,12 +829,28 @@ void check_keys(const JsonAt& object, Section section, std::span<const std::stri
 
 std::uint64_t whole_setting(const JsonAt& object, Section section, std::string_view key) {
     const auto& row = setting(section, key);
-    return object[key].whole(static_cast<std::uint64_t>(row.min), static_cast<std::uint64_t>(row.max), row.fix);
+    return object[key].whole(static_cast<std::uint64_t>(row.min), whole_max(row), row.fix);
 }
 
 double number_setting(const JsonAt& object, Section section, std::string_view key) {
     const auto& row = setting(section, key);
     return object[key].number(row.min, row.max, row.fix);
+}
+
+std::uint64_t bounded_setting(const JsonAt& object, Section section, std::string_view key) {
+    const auto& row = setting(section, key);
+    auto at = object[key];
+    auto value = at.unsigned_int(whole_max(row));
+    if (value < row.min || (row.step && value % row.step != 0)) at.fail(row.below_min, row.fix);
+    return value;
+}
+
+std::string choice_setting(const JsonAt& object, Section section, std::string_view key) {
+    const auto& row = setting(section, key);
+    auto at = object[key];
+    auto value = at.string();
+    if (!is_choice(row, value)) at.fail("unknown " + std::string(row.noun) + " '" + value + "'", row.fix);
+    return value;
 }
 
 void check_flag_value(const Setting& row, double value) {
@@ -638,7 +864,11 @@ void check_flag_value(const Setting& row, double value) {
                       (names_problem ? "" : "out of range; ") + std::string(fix));
 }
 
-std::vector<std::string_view> settings_markdown_tables() { return {std::begin(kTables), std::end(kTables)}; }
+std::vector<std::string_view> settings_markdown_tables() {
+    std::vector<std::string_view> names;
+    for (const auto& t : kTables) names.push_back(t.name);
+    return names;
+}
 
 std::string settings_markdown(std::string_view table) {
     std::string out;
@@ -656,10 +886,10 @@ std::string settings_markdown(std::string_view table) {
     for (const auto& row : kSettings) {
         if (row.key.empty() || table_of(row) != table) continue;
         auto meaning = std::string(row.doc.empty() ? row.help : row.doc);
-        if (row.has_range() && !row.own_check && row.doc.empty() && row.doc_type.empty() &&
+        if (row.has_range() && !row.own_check && row.doc.empty() && row.doc_type.empty() && row.max < kAnyUnsigned &&
             (row.section == S::Program || row.section == S::TimerLimit || row.section == S::Timing))
             meaning += " (" + number_text(row.min) + "–" + number_text(row.max) + ")";
-        auto key = key_text(row);
+        auto key = key_text(row, table);
         out += "| " + key + " | " + type_text(row) + " | " + default_cell(row) + " | " + meaning + " |\n";
     }
     return out;

@@ -5,9 +5,9 @@
 // option tables and config/schema.json are built from or checked against it
 // (tests/unit/test_settings_table.cpp). Model: Redis's standardConfig table.
 //
-// Not here: the other protocol faces' keys and flags ("kind", "hostlink",
-// "jw51cm", --hostlink-port, --serial) — they belong to the faces
-// (config/frontend_config.cpp), and the station's key check names them as extras.
+// Not here: the station's "kind" and the other protocol faces' sections and
+// flags — they belong to the faces (frontends/face.hpp, read by
+// config/frontend_config.cpp), and the station's key check names them as extras.
 #pragma once
 
 #include <cstdint>
@@ -24,17 +24,42 @@ namespace slmp::config {
 class JsonAt;
 
 // The JSON object a key sits in ("ports": [ {…} ] is Port, "cpu": {"program": {…}} is Program).
+// A nested object is a section too, and the row that holds it names it
+// (Setting::holds): "limits" holds ProfileLimits, whose "batch_words" holds
+// PointLimit. section_name() is its path: "limits", "networks[]".
 enum class Section : std::uint8_t {
+    None,          // no section: a row that holds no object
     CommandLine,   // a flag with no key in the file (--help, --config, --ready-file, ...)
     Plant,         // the top of a file that may list "stations"
     Station,       // one station's top-level keys (and a plant's defaults)
     Port,          // an entry of "ports"
+    Module,        // an entry of "modules"
+    Network,       // an entry of "networks"
+    MultiCpu,      // an entry of "cpus" (CPU No.2-4)
+    Drive,         // a value of "drives" (keyed by drive number)
+    Label,         // an entry of "labels"
+    Structure,     // an entry of "structures"
+    Member,        // an entry of a structure's "members"
+    LabelsFile,    // a --labels JSON file
     Http,          // "http"
     Cpu,           // "cpu"
+    Lockout,       // "cpu": {"password_lockout"}
+    Timer,         // an entry of "cpu": {"timers"}
+    Counter,       // an entry of "cpu": {"counters"}
+    CpuError,      // "cpu": {"error"}
     Program,       // "cpu": {"program"}
     TimerLimit,    // "cpu": {"program": {"timer_limit"}}
     Timing,        // "timing"
     Profile,       // a CPU profile file (config/profiles/*.json)
+    Frame1E,       // a profile's "frame_1e"
+    Pipeline,      // a profile's "pipeline"
+    EndCodes,      // a profile's "end_codes"
+    Limits,        // a profile's "limits"
+    PointLimit,    // a limit of "limits" that is one number: {"max", "end_code"}
+    FormLimit,     // a limit of "limits" per request form: {"q", "iqr", "end_code"}
+    ProfileTiming, // a profile's "timing": the Timing rows that say `also`
+    Difference,    // a value of a profile's "manual_vs_hardware" (keyed by topic)
+    SizeRegister,  // an entry of a profile's "size_registers"
 };
 
 enum class SettingType : std::uint8_t { String, Integer, Number, Boolean, Choice, Array, Object, None };
@@ -49,6 +74,9 @@ enum class FlagArg : std::uint8_t {
     UnsignedList,   // std::vector<unsigned>, multitoken: --tcp-port 5000 5001
     TextList,       // std::vector<std::string>, repeatable: --scenario a.json --scenario b.json
 };
+
+// A Setting's max that stands for "any 64-bit unsigned number" (timing.seed).
+inline constexpr double kAnyUnsigned = 18446744073709551615.0;
 
 struct Setting {
     Section section;
@@ -68,6 +96,14 @@ struct Setting {
     std::string_view flag_fix = {};  // the hint of the flag's range error (default `fix`)
     bool required = false;           // the key must be given (in its object)
     bool own_check = false;          // range and form checked by its reader (numbers that go in pairs, steps)
+    Section holds = Section::None;   // Object/Array: the section of its object, or of each entry
+    Section also = Section::None;    // a key of this section too (the profile's "timing" takes Timing's model keys)
+    // A whole number read with bounded_setting(): above `max` "value N is larger
+    // than MAX; use a smaller number", below `min` this problem and `fix`.
+    std::string_view below_min = {};
+    bool plain_range = false;        // read by bounded_setting() (the messages above), not whole_setting()
+    std::uint32_t step = 0;          // the value must be a multiple of this (wdt_ms: 10)
+    std::string_view noun = {};      // Choice: what choice_setting()'s "unknown NOUN 'x'" calls a wrong value
 
     bool has_range() const { return min != 0 || max != 0; }
     // "profile" of "profile,p".
@@ -94,13 +130,19 @@ bool is_choice(const Setting& row, std::string_view value);
 // (Number) within the row's range, with the row's fix in the error.
 std::uint64_t whole_setting(const JsonAt& object, Section section, std::string_view key);
 double number_setting(const JsonAt& object, Section section, std::string_view key);
+// A whole number no larger than the row's max (JsonAt::unsigned_int's message),
+// then at least its min (the row's below_min; fix).
+std::uint64_t bounded_setting(const JsonAt& object, Section section, std::string_view key);
+// A Choice row's value: a string among its choices, else "unknown NOUN 'x'; fix".
+std::string choice_setting(const JsonAt& object, Section section, std::string_view key);
 
 // A flag's value against its row's range (in the flag's unit); throws
 // ConfigError "--flag value: out of range; fix".
 void check_flag_value(const Setting& row, double value);
 
-// The generated docs: a Markdown table ("cli", "station", "port", "http",
-// "cpu", "program", "timing", "profile") and the JSON Schema of a configuration file.
+// The generated docs: a Markdown table ("cli", "station", "port", "hardware",
+// "http", "cpu", "program", "timing", "profile") and the JSON Schema of a
+// configuration file.
 std::string settings_markdown(std::string_view table);
 std::vector<std::string_view> settings_markdown_tables();
 nlohmann::json settings_json_schema();

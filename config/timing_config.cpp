@@ -8,8 +8,6 @@ namespace slmp::config {
 
 namespace {
 
-constexpr const char* kModeFix = "use \"instant\" (default), \"end_of_scan\" or \"model\"";
-
 TimingOverrides read_overrides(const JsonAt& at) {
     TimingOverrides o;
     for (auto [key, value] : {std::pair{"ke_ms", &o.ke_ms}, {"ke_ascii_ms", &o.ke_ascii_ms}, {"kdt_ms", &o.kdt_ms},
@@ -33,7 +31,7 @@ std::string_view to_string(TimingMode mode) {
 TimingMode parse_timing_mode(const std::string& text, const std::string& where) {
     for (auto mode : {TimingMode::Instant, TimingMode::EndOfScan, TimingMode::Model})
         if (text == to_string(mode)) return mode;
-    throw ConfigError(where + ": unknown timing mode '" + text + "'; " + kModeFix);
+    throw ConfigError(where + ": unknown timing mode '" + text + "'; " + std::string(setting(Section::Timing, "mode").fix));
 }
 
 TimingModel TimingOverrides::over(TimingModel m) const {
@@ -47,17 +45,17 @@ TimingModel TimingOverrides::over(TimingModel m) const {
 }
 
 TimingModel parse_timing_model(const JsonAt& at, TimingModel base) {
-    at.only_keys({"ke_ms", "ke_ascii_ms", "kdt_ms", "kdt_ascii_ms", "scan_wait"});
+    check_keys(at, Section::ProfileTiming);
     return read_overrides(at).over(base);
 }
 
 TimingConfig parse_timing_config(const JsonAt& at) {
     check_keys(at, Section::Timing);
     TimingConfig c;
-    if (at.has("mode")) c.mode = parse_timing_mode(at["mode"].string(), at.source() + ": " + at["mode"].pointer());
+    if (at.has("mode")) c.mode = parse_timing_mode(choice_setting(at, Section::Timing, "mode"), at["mode"].pointer());
     c.model = read_overrides(at);
     if (at.has("jitter")) c.jitter = number_setting(at, Section::Timing, "jitter");
-    if (at.has("seed")) c.seed = at["seed"].unsigned_int(~std::uint64_t{0});
+    if (at.has("seed")) c.seed = bounded_setting(at, Section::Timing, "seed");
     return c;
 }
 

@@ -1,5 +1,6 @@
 // Recordings of SLMP sessions as JSON lines (docs/scenarios.md "Record &
-// replay"). The first line describes the recording, then one line per event:
+// replay"): the format and its reader, for replay and slmp-replay; the
+// station writes them (station/capture/recording_writer.hpp). The first line describes the recording, then one line per event:
 //   {"slmp_recording":1,"started":"2024-05-01T12:00:00.123Z","profile":"R08CPU"}
 //   {"t_ms":1.25,"conn":2,"transport":"tcp","peer":"127.0.0.1:50312","event":"open"}
 //   {"t_ms":3.5,"conn":2,"transport":"tcp","peer":"127.0.0.1:50312","event":"exchange",
@@ -19,7 +20,6 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/recorder.hpp"
 #include "scenarios/scenario.hpp"
 
 namespace slmp::scenarios {
@@ -43,30 +43,5 @@ Recording read_recording(const std::filesystem::path& file);
 
 std::string to_hex(std::span<const std::uint8_t> bytes);
 std::optional<std::vector<std::uint8_t>> from_hex(std::string_view text);
-
-class RecordingWriter : public Recorder {
-public:
-    // Truncates `file`; throws config::ConfigError when it cannot be written.
-    RecordingWriter(const std::filesystem::path& file, const std::string& profile, TimePoint start);
-
-    void opened(TimePoint at, const RecordedLink& link) override;
-    // {"event":"ondemand","response":"d000..."}: replay skips it (no request to match).
-    void pushed(TimePoint at, const RecordedLink& link, const std::vector<std::uint8_t>& frame) override;
-    void exchange(TimePoint at, const RecordedLink& link, std::span<const std::uint8_t> request,
-                  const std::vector<std::uint8_t>* response, const std::vector<std::string>& faults,
-                  const std::string& named) override;
-    void closed(TimePoint at, const RecordedLink& link, const std::string& why) override;
-    void frontend_exchange(TimePoint at, const RecordedLink& link, std::string_view protocol, std::string_view command,
-                           std::string_view code, std::span<const std::uint8_t> request,
-                           std::span<const std::uint8_t> response, bool answered,
-                           const std::vector<std::string>& faults) override;
-
-private:
-    void line(const std::string& text);
-    double ms(TimePoint at) const;
-
-    std::ofstream out_;
-    TimePoint start_;
-};
 
 }  // namespace slmp::scenarios

@@ -86,34 +86,18 @@ void check_table_ranges(const po::variables_map& vm) {
     }
 }
 
-// The options that set every station (or the only one): behaviour, limits,
-// the clock, logs, HTTP; in a plant the one-station options are refused first.
-void apply_station_options(const po::variables_map& vm, bool plant, config::StationConfig& station) {
-    auto& c = station.server;
-    auto& frontends = station.frontends;
-    if (vm.count("profile")) c.profile = vm["profile"].as<std::string>();
-    if (vm.count("bind")) c.bind = vm["bind"].as<std::string>();
-    if (vm.count("tcp-port")) replace_ports(c, Transport::Tcp, vm["tcp-port"].as<std::vector<unsigned>>());
-    if (vm.count("udp-port")) replace_ports(c, Transport::Udp, vm["udp-port"].as<std::vector<unsigned>>());
+// The flags that set a key of every port (the settings table's port rows with a flag).
+void apply_port_options(const po::variables_map& vm, config::ServerConfig& c) {
     if (vm.count("data-code")) {
         auto code = config::parse_data_code(vm["data-code"].as<std::string>(), "--data-code");
         for (auto& p : c.ports) p.data_code = code;
     }
-    if (vm.count("max-connections")) {
-        auto n = vm["max-connections"].as<unsigned>();
-        for (auto& p : c.ports) p.max_connections = n;
-    }
-    if (vm.count("idle-timeout")) {
-        auto seconds = vm["idle-timeout"].as<double>();
-        for (auto& p : c.ports) p.idle_timeout_ms = static_cast<unsigned>(seconds * 1000);
-    }
-    if (vm.count("partial-frame-timeout")) {
-        auto seconds = vm["partial-frame-timeout"].as<double>();
-        for (auto& p : c.ports) p.partial_frame_timeout_ms = static_cast<unsigned>(seconds * 1000);
-    }
-    if (vm.count("max-connections-per-address")) {
-        auto n = vm["max-connections-per-address"].as<unsigned>();
-        for (auto& p : c.ports) p.max_connections_per_address = n;
+    auto seconds_ms = [&](const char* flag) { return static_cast<unsigned>(vm[flag].as<double>() * 1000); };
+    for (auto& p : c.ports) {
+        if (vm.count("max-connections")) p.max_connections = vm["max-connections"].as<unsigned>();
+        if (vm.count("idle-timeout")) p.idle_timeout_ms = seconds_ms("idle-timeout");
+        if (vm.count("partial-frame-timeout")) p.partial_frame_timeout_ms = seconds_ms("partial-frame-timeout");
+        if (vm.count("max-connections-per-address")) p.max_connections_per_address = vm["max-connections-per-address"].as<unsigned>();
     }
     if (vm.count("network-no") || vm.count("station-no")) {
         auto numbers = config::checked_station_numbers(vm.count("network-no") ? vm["network-no"].as<unsigned>() : 0,
@@ -121,6 +105,10 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
                                                        "--network-no/--station-no");
         for (auto& p : c.ports) p.numbers = numbers;
     }
+}
+
+// Proxy mode and, with it, differential mode (docs/twin.md).
+void apply_upstream_options(const po::variables_map& vm, config::ServerConfig& c) {
     if (vm.count("upstream")) {
         c.upstream = vm["upstream"].as<std::string>();
         config::parse_upstream(c.upstream, "--upstream");
@@ -133,13 +121,9 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
         c.compare = true;
     }
     if (vm.count("compare-slack")) c.compare_slack_ms = static_cast<unsigned>(std::lround(vm["compare-slack"].as<double>() * 1000));
-    if (vm.count("max-request-bytes")) c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();
-    if (vm.count("log-level")) {
-        c.log_level = vm["log-level"].as<std::string>();
-        if (!config::valid_log_level(c.log_level))
-            throw ConfigError("--log-level " + c.log_level + ": unknown level; use trace, debug, info, warn, error or off");
-    }
-    if (vm.count("ready-file")) c.ready_file = vm["ready-file"].as<std::string>();
+}
+
+void apply_http_options(const po::variables_map& vm, config::ServerConfig& c) {
     if (vm.count("http-port")) {
         c.http.port = static_cast<std::uint16_t>(vm["http-port"].as<unsigned>());
         c.http.enabled = true;
@@ -150,7 +134,10 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
             throw ConfigError("--no-http contradicts --http-port/--http-bind; give one or the other");
         c.http.enabled = false;
     }
-    if (vm.count("switch")) c.cpu.runtime.run_switch = config::parse_run_switch(vm["switch"].as<std::string>(), "--switch");
+}
+
+// The files a station reads and writes: state, drives, scenarios, labels, program, recordings, snapshot.
+void apply_file_options(const po::variables_map& vm, bool plant, config::ServerConfig& c) {
     if (vm.count("state-dir")) {
         std::filesystem::path dir(vm["state-dir"].as<std::string>());
         c.persistence.state_dir = (plant ? dir / c.name : dir).string();   // a plant: a folder per station
@@ -170,15 +157,39 @@ void apply_station_options(const po::variables_map& vm, bool plant, config::Stat
     if (vm.count("program")) c.cpu.program.file = vm["program"].as<std::string>();
     if (vm.count("record")) c.record_file = vm["record"].as<std::string>();
     if (vm.count("record-pcap")) c.record_pcap_file = vm["record-pcap"].as<std::string>();
+    if (vm.count("snapshot")) c.snapshot_file = vm["snapshot"].as<std::string>();
+}
+
+// The options that set every station (or the only one): behaviour, limits,
+// the clock, logs, HTTP; in a plant the one-station options are refused first.
+void apply_station_options(const po::variables_map& vm, bool plant, config::StationConfig& station) {
+    auto& c = station.server;
+    auto& frontends = station.frontends;
+    if (vm.count("profile")) c.profile = vm["profile"].as<std::string>();
+    if (vm.count("bind")) c.bind = vm["bind"].as<std::string>();
+    if (vm.count("tcp-port")) replace_ports(c, Transport::Tcp, vm["tcp-port"].as<std::vector<unsigned>>());
+    if (vm.count("udp-port")) replace_ports(c, Transport::Udp, vm["udp-port"].as<std::vector<unsigned>>());
+    apply_port_options(vm, c);
+    apply_upstream_options(vm, c);
+    if (vm.count("max-request-bytes")) c.max_request_bytes = vm["max-request-bytes"].as<std::size_t>();
+    if (vm.count("log-level")) {
+        c.log_level = vm["log-level"].as<std::string>();
+        if (!config::valid_log_level(c.log_level))
+            throw ConfigError("--log-level " + c.log_level + ": unknown level; " +
+                              std::string(config::setting(config::Section::Station, "log_level").fix));
+    }
+    if (vm.count("ready-file")) c.ready_file = vm["ready-file"].as<std::string>();
+    apply_http_options(vm, c);
+    if (vm.count("switch")) c.cpu.runtime.run_switch = config::parse_run_switch(vm["switch"].as<std::string>(), "--switch");
+    apply_file_options(vm, plant, c);
     if (vm.count("clock-speed")) c.clock_speed = vm["clock-speed"].as<double>();
     if (vm.count("timing")) c.timing.mode = config::parse_timing_mode(vm["timing"].as<std::string>(), "--timing");
     if (vm.count("clock")) {
         auto mode = vm["clock"].as<std::string>();
-        if (mode != "realtime" && mode != "frozen")
+        if (!config::is_choice(*config::setting_by_flag("clock"), mode))
             throw ConfigError("--clock " + mode + ": use realtime or frozen");
         c.clock_frozen = mode == "frozen";
     }
-    if (vm.count("snapshot")) c.snapshot_file = vm["snapshot"].as<std::string>();
     // The protocol faces' own options (frontends/face.hpp), then: a station of a
     // face's kind serves that face alone.
     for (const auto* face : frontends::faces())
@@ -210,6 +221,30 @@ void apply_shard_option(const po::variables_map& vm, config::PlantConfig& plant)
     if (plant.plant) config::select_shard(plant, index, count);
 }
 
+// --help, --version, --list-profiles: print, and the caller exits.
+bool print_info(const po::variables_map& vm, const po::options_description& options) {
+    if (vm.count("help")) {
+        std::cout << "slmp-sim — a MELSEC CPU that answers SLMP (3E/4E, binary/ASCII; 1E and the station-number-extended frame where its profile has them) over TCP and UDP\n\n"
+                  << "Usage: slmp-sim [options]\n\n" << options << "\n";
+        return true;
+    }
+    if (vm.count("version")) {
+        std::cout << kVersion << "\n";
+        return true;
+    }
+    if (vm.count("list-profiles")) {
+        // One line each: the name to give --profile, what 0101 answers, the family, the description.
+        for (const auto& name : config::builtin_profile_names()) {
+            auto profile = config::load_profile(name);
+            std::cout << fmt::format("{:<20} {:<16} {:04X}  {:<8} {}\n", name, profile.cpu.type_name,
+                                     profile.cpu.model_code, config::family_name(profile.cpu.family),
+                                     profile.description);
+        }
+        return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 CommandLine parse_command_line(int argc, char** argv) {
@@ -224,29 +259,10 @@ CommandLine parse_command_line(int argc, char** argv) {
     }
 
     CommandLine cl;
-    if (vm.count("help")) {
-        std::cout << "slmp-sim — a MELSEC CPU that answers SLMP (3E/4E, binary/ASCII; 1E and the station-number-extended frame where its profile has them) over TCP and UDP\n\n"
-                  << "Usage: slmp-sim [options]\n\n" << options << "\n";
+    if (print_info(vm, options)) {
         cl.exit_now = true;
         return cl;
     }
-    if (vm.count("version")) {
-        std::cout << kVersion << "\n";
-        cl.exit_now = true;
-        return cl;
-    }
-    if (vm.count("list-profiles")) {
-        // One line each: the name to give --profile, what 0101 answers, the family, the description.
-        for (const auto& name : config::builtin_profile_names()) {
-            auto profile = config::load_profile(name);
-            std::cout << fmt::format("{:<20} {:<16} {:04X}  {:<8} {}\n", name, profile.cpu.type_name,
-                                     profile.cpu.model_code, config::family_name(profile.cpu.family),
-                                     profile.description);
-        }
-        cl.exit_now = true;
-        return cl;
-    }
-
     check_table_ranges(vm);
     // --profile is known before the file is read: the file's addresses follow its numbering.
     const auto profile = vm.count("profile") ? vm["profile"].as<std::string>() : std::string();

@@ -3,7 +3,8 @@
 #include <spdlog/spdlog.h>
 
 #include "config/config.hpp"
-#include "scenarios/pcap_writer.hpp"
+#include "station/capture/pcap_writer.hpp"
+#include "station/capture/recording_writer.hpp"
 
 namespace slmp::station {
 
@@ -78,7 +79,7 @@ bool ScenarioHook::stop(const std::string& name) {
 void ScenarioHook::record(const std::string& file, const std::string& profile) {
     if (recording_)
         throw config::ConfigError("already recording to " + recording_file_ + "; stop that recording first");
-    recorders_.push_back(std::make_unique<scenarios::RecordingWriter>(file, profile, std::chrono::steady_clock::now()));
+    recorders_.push_back(std::make_unique<RecordingWriter>(file, profile, std::chrono::steady_clock::now()));
     recording_ = recorders_.back().get();
     recording_file_ = file;
     log_->info("recording every request and response to {}", file);
@@ -94,7 +95,7 @@ bool ScenarioHook::stop_recording() {
 }
 
 void ScenarioHook::record_pcap(const std::string& file, const std::string& bind) {
-    recorders_.push_back(std::make_unique<scenarios::PcapWriter>(file, bind, std::chrono::steady_clock::now(),
+    recorders_.push_back(std::make_unique<PcapWriter>(file, bind, std::chrono::steady_clock::now(),
                                                                  std::chrono::system_clock::now()));
     log_->info("capturing every request and response to {} (pcap)", file);
 }
@@ -138,7 +139,7 @@ void ScenarioHook::after(scenarios::Plan& plan, Handled& handled, std::span<cons
         handled.reset = plan.reset;
     }
     if (recorders_.empty()) return;
-    const scenarios::RecordedLink at{session.id, peer.transport, peer.endpoint(), peer.local_port};
+    const RecordedLink at{session.id, peer.transport, peer.endpoint(), peer.local_port};
     for (auto& r : recorders_)
         r->exchange(std::chrono::steady_clock::now(), at, input.first(outcome.consumed),
                     outcome.action == Outcome::Action::Respond ? &outcome.response : nullptr, plan.decision.fired,
@@ -154,7 +155,7 @@ scenarios::Plan ScenarioHook::frontend_before(scenarios::Incoming& incoming, std
 
 void ScenarioHook::frontend_recorded(const FrontEndRecord& f) {
     if (recorders_.empty()) return;
-    const scenarios::RecordedLink at{f.connection, f.peer.transport, f.peer.endpoint(), f.peer.local_port};
+    const RecordedLink at{f.connection, f.peer.transport, f.peer.endpoint(), f.peer.local_port};
     const bool answered = !f.code.empty() || !f.response.empty();
     for (auto& r : recorders_)
         r->frontend_exchange(std::chrono::steady_clock::now(), at, f.protocol, f.command, f.code, f.request, f.response,
@@ -176,20 +177,20 @@ void ScenarioHook::log_summary() const {
 
 void ScenarioHook::on_opened(const Connection& c) {
     if (c.peer.transport == Transport::Tcp) ordinals_[c.id] = ++connections_;
-    const scenarios::RecordedLink at{c.id, c.peer.transport, c.peer.endpoint(), c.peer.local_port};
+    const RecordedLink at{c.id, c.peer.transport, c.peer.endpoint(), c.peer.local_port};
     for (auto& r : recorders_) r->opened(std::chrono::steady_clock::now(), at);
 }
 
 void ScenarioHook::on_pushed(const PushRecord& p) {
     if (recorders_.empty()) return;
-    const scenarios::RecordedLink at{p.connection, p.peer.transport, p.peer.endpoint(), p.peer.local_port};
+    const RecordedLink at{p.connection, p.peer.transport, p.peer.endpoint(), p.peer.local_port};
     const std::vector<std::uint8_t> frame(p.frame.begin(), p.frame.end());
     for (auto& r : recorders_) r->pushed(std::chrono::steady_clock::now(), at, frame);
 }
 
 void ScenarioHook::on_closed(const Connection& c, std::string_view why) {
     ordinals_.erase(c.id);
-    const scenarios::RecordedLink at{c.id, c.peer.transport, c.peer.endpoint(), c.peer.local_port};
+    const RecordedLink at{c.id, c.peer.transport, c.peer.endpoint(), c.peer.local_port};
     for (auto& r : recorders_) r->closed(std::chrono::steady_clock::now(), at, std::string(why));
 }
 

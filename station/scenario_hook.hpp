@@ -21,10 +21,10 @@
 #include "protocol/peer.hpp"
 #include "scenarios/faults.hpp"
 #include "scenarios/incoming.hpp"
-#include "scenarios/recording.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/runner_set.hpp"
 #include "station/activity.hpp"
+#include "station/capture/recorder.hpp"
 #include "station/network_map.hpp"
 
 namespace slmp::station {
@@ -118,9 +118,9 @@ private:
     scenarios::RunnerSet runners_;
     devicemodel::Cpu* cpu_ = nullptr;              // attach()
     scenarios::Station* station_ = nullptr;
-    scenarios::Recorder* recording_ = nullptr;     // the JSON-lines one of recorders_
+    Recorder* recording_ = nullptr;     // the JSON-lines one of recorders_
     std::string recording_file_;
-    std::vector<std::unique_ptr<scenarios::Recorder>> recorders_;   // --record, --record-pcap
+    std::vector<std::unique_ptr<Recorder>> recorders_;   // --record, --record-pcap
     std::map<std::uint64_t, std::uint64_t> ordinals_;   // TCP connection id -> n-th connection since start
     std::uint64_t connections_ = 0;
 };

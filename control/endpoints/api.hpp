@@ -57,7 +57,7 @@ void add_program_endpoints(Router& router, Api& api);      // /api/program[/sour
 void add_event_endpoint(Router& router, Api& api);         // /api/events
 void add_metrics_endpoint(Router& router, Api& api);       // /metrics
 void add_redundant_endpoints(Router& router, Api& api);    // /api/redundant[/switch] (a redundant pair's CPU)
-void add_face_endpoints(Router& router, Api& api);         // /api/<face>/... (the JW-51CM's /api/jw51cm/rings)
+void add_face_endpoints(Router& router, Api& api);         // /api/<face>/...: each face's own resources (Face::api_routes)
 void add_static_pages(Router& router);                     // / and its scripts and styles (control/web/)
 
 // "RUN", "STOP", "PAUSE" (state_endpoints.cpp).

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <iterator>
 
-#include "scenarios/pcap_writer.hpp"
 #include "scenarios/recording.hpp"
+#include "station/capture/pcap_writer.hpp"
 #include "support/fixtures.hpp"
 #include "support/scenario_fixtures.hpp"
 
@@ -44,8 +44,8 @@ TEST_CASE("pcap: a TCP session as SYN, data with advancing sequence numbers, FIN
     auto file = temp_file("tcp.pcap");
     {
         // A wildcard bind: a loopback client must have reached 127.0.0.1.
-        scenarios::PcapWriter w(file, "0.0.0.0", at(0), kWall);
-        const scenarios::RecordedLink link{7, scenarios::Transport::Tcp, "127.0.0.1:50312", 5000};
+        station::PcapWriter w(file, "0.0.0.0", at(0), kWall);
+        const station::RecordedLink link{7, scenarios::Transport::Tcp, "127.0.0.1:50312", 5000};
         w.opened(at(1.5), link);
         w.exchange(at(2), link, kRequest, &kResponse, {}, "");
         w.closed(at(3), link, "closed by the client");
@@ -80,7 +80,7 @@ TEST_CASE("pcap: a TCP session as SYN, data with advancing sequence numbers, FIN
 TEST_CASE("pcap: a UDP exchange between the client's address and the bound address", "[scenario][pcap]") {
     auto file = temp_file("udp.pcap");
     {
-        scenarios::PcapWriter w(file, "192.168.3.10", at(0), kWall);
+        station::PcapWriter w(file, "192.168.3.10", at(0), kWall);
         w.exchange(at(1), {3, scenarios::Transport::Udp, "10.0.0.5:40000", 5001}, kRequest, nullptr, {}, "");
     }
     auto pcap = slurp(file);
@@ -91,6 +91,6 @@ TEST_CASE("pcap: a UDP exchange between the client's address and the bound addre
 }
 
 TEST_CASE("pcap: an unwritable path names the option", "[scenario][pcap]") {
-    CHECK_THROWS_WITH(scenarios::PcapWriter("/nonexistent-dir/x.pcap", "0.0.0.0", at(0), kWall),
+    CHECK_THROWS_WITH(station::PcapWriter("/nonexistent-dir/x.pcap", "0.0.0.0", at(0), kWall),
                       Catch::Contains("--record-pcap"));
 }

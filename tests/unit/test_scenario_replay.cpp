@@ -6,6 +6,7 @@
 #include "scenarios/recording.hpp"
 #include "scenarios/replay.hpp"
 #include "scenarios/runner.hpp"
+#include "station/capture/recording_writer.hpp"
 #include "scenarios/incoming.hpp"
 #include "support/fixtures.hpp"
 #include "support/scenario_fixtures.hpp"
@@ -29,8 +30,8 @@ TEST_CASE("recording: written as JSON lines and read back", "[scenario][replay]"
     auto file = temp_file("rec.jsonl");
     auto t0 = at(0);
     {
-        scenarios::RecordingWriter w(file, "R08CPU", t0);
-        const scenarios::RecordedLink link{2, scenarios::Transport::Tcp, "127.0.0.1:5555", 5000};
+        station::RecordingWriter w(file, "R08CPU", t0);
+        const station::RecordedLink link{2, scenarios::Transport::Tcp, "127.0.0.1:5555", 5000};
         w.opened(at(1), link);
         Bytes response = bytes("D0 00 00 FF FF 03 00 04 00 00 00 2A 00");
         w.exchange(at(2.5), link, kRead3E, &response, {"slow"}, "");
@@ -107,7 +108,7 @@ TEST_CASE("replay: a scenario answers from its recording, misses go by on_miss",
     auto dir = std::filesystem::temp_directory_path() / ("slmp-unit-replay-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     {
-        scenarios::RecordingWriter w(dir / "session.jsonl", "R08CPU", at(0));
+        station::RecordingWriter w(dir / "session.jsonl", "R08CPU", at(0));
         Bytes response = bytes("D0 00 00 FF FF 03 00 04 00 00 00 2A 00");
         w.exchange(at(1), {1, scenarios::Transport::Tcp, "127.0.0.1:1", 5000}, kRead3E, &response, {}, "");
     }

@@ -48,8 +48,36 @@ std::string read_text(const std::filesystem::path& file) {
 
 void write_text(const std::filesystem::path& file, const std::string& text) { std::ofstream(file) << text; }
 
+// The objects of a CPU profile file, which the profile test below loads.
+bool in_profile(Section section) {
+    switch (section) {
+        case Section::Profile:
+        case Section::Frame1E:
+        case Section::Pipeline:
+        case Section::EndCodes:
+        case Section::Limits:
+        case Section::PointLimit:
+        case Section::FormLimit:
+        case Section::ProfileTiming:
+        case Section::Difference:
+        case Section::SizeRegister: return true;
+        default: return false;
+    }
+}
+
 // A value the key takes: the scalars from the row, the rest by hand.
 json sample(const Setting& row) {
+    // Keys whose sample depends on the object they are in.
+    static const std::map<std::pair<Section, std::string>, json> in_object = {
+        {{Section::Label, "name"}, "Speed"}, {{Section::Label, "type"}, "Word [Signed]"},
+        {{Section::Label, "device"}, "D100"}, {{Section::Structure, "name"}, "Axis"},
+        {{Section::Structure, "members"}, json::array({{{"name", "pos"}, {"type", "Word [Signed]"}}})},
+        {{Section::Member, "name"}, "pos"}, {{Section::Member, "type"}, "Word [Signed]"},
+        {{Section::Timer, "device"}, "T0"}, {{Section::Timer, "points"}, 1}, {{Section::Timer, "preset"}, 1},
+        {{Section::MultiCpu, "profile"}, "R08CPU"}, {{Section::CpuError, "code"}, "1900"},
+        {{Section::Network, "send"}, json::array({"W0-W0F"})}, {{Section::Network, "device_sizes"}, {{"W", 8192}}}, {{Section::Drive, "passwords"}, {{"LINE.CSV", "secret1"}}},
+        {{Section::Drive, "dir"}, "/tmp"}};
+    if (auto it = in_object.find({row.section, std::string(row.key)}); it != in_object.end()) return it->second;
     static const std::map<std::string, json> samples = {
         {"profile", "R04CPU"}, {"bind", "127.0.0.1"}, {"name", "press-1"}, {"ports", json::array()},
         {"device_sizes", {{"D", 2000}}}, {"devices", {{"D0", 1}}}, {"modules", json::array()},
@@ -61,8 +89,10 @@ json sample(const Setting& row) {
         {"counters", json::array()}, {"program", {{"file", "line1.csv"}}}, {"error", {{"code", "1900"}}},
         {"file", "line1.csv"}, {"comments", "comments.csv"}, {"timer_limit", json::object()}, {"seed", 7},
         {"wdt_ms", 200}, {"shard_host", "plant-{shard}.plant"}, {"upstream", "192.168.3.39:5000"},
-        {"compare", false}, {"redundant", {{"pair", "press-b"}}},
-        {"multidrop", {{"via", "line"}, {"start_io", "0040"}, {"number", 3}}}};   // true needs "upstream" beside it (checked in its own test)
+        {"compare", false},   // true needs "upstream" beside it (checked in its own test)
+        {"redundant", {{"pair", "press-b"}}}, {"multidrop", {{"via", "line"}, {"start_io", "0040"}, {"number", 3}}},
+        {"start_io", "0030"}, {"model", "Q62DA"}, {"head_address", "1008"}, {"dims", json::array({2})},
+        {"comment", "a note"}, {"members", json::array()}};
     if (auto it = samples.find(std::string(row.key)); it != samples.end()) return it->second;
     switch (row.type) {
         case SettingType::Integer: return static_cast<std::uint64_t>(row.max);
@@ -95,8 +125,51 @@ json document(Section section, const std::string& key, const json& value) {
         }
         case Section::TimerLimit: return {{"cpu", {{"program", {{"file", "line1.csv"}, {"timer_limit", {{key, value}}}}}}}};
         case Section::Timing: return {{"timing", {{key, value}}}};
-        case Section::CommandLine:
-        case Section::Profile: break;   // a profile file: its own test below
+        case Section::Module: {
+            json module = {{"start_io", "0030"}, {"buffer_words", 16}};
+            module[key] = value;
+            return {{"modules", json::array({module})}};
+        }
+        case Section::Network: {
+            json network = {{"number", 1}, {"station", 1}};
+            network[key] = value;
+            return {{"networks", json::array({network})}};
+        }
+        case Section::MultiCpu: {
+            json cpu = {{"number", 2}, {"profile", "R08CPU"}};
+            cpu[key] = value;
+            return {{"cpus", json::array({cpu})}};
+        }
+        case Section::Drive: return {{"drives", {{"2", {{key, value}}}}}};
+        case Section::Label: {
+            json label = {{"name", "Speed"}, {"type", "Word [Signed]"}};
+            label[key] = value;
+            return {{"labels", json::array({label})}};
+        }
+        case Section::Structure: {
+            json structure = {{"name", "Axis"}, {"members", json::array()}};
+            structure[key] = value;
+            return {{"structures", json::array({structure})}};
+        }
+        case Section::Member: {
+            json member = {{"name", "pos"}, {"type", "Word [Signed]"}};
+            member[key] = value;
+            return {{"structures", json::array({{{"name", "Axis"}, {"members", json::array({member})}}})}};
+        }
+        case Section::Lockout: return {{"cpu", {{"password_lockout", {{key, value}}}}}};
+        case Section::Timer:
+        case Section::Counter: {
+            bool timer = section == Section::Timer;
+            json entry = {{"device", timer ? "T0" : "C0"}, {"preset", 1}};
+            entry[key] = value;
+            return {{"cpu", {{timer ? "timers" : "counters", json::array({entry})}}}};
+        }
+        case Section::CpuError: {
+            json error = {{"code", "1900"}};
+            error[key] = value;
+            return {{"cpu", {{"error", error}}}};
+        }
+        default: break;   // the command line; a profile file (its own test below); a --labels file
     }
     return json::object();
 }
@@ -141,8 +214,12 @@ TEST_CASE("each key and each flag is one row", "[settings]") {
         INFO(row.key << " " << row.flag);
         CHECK((row.key.empty() == (row.section == Section::CommandLine)));
         CHECK(!(row.help.empty() && row.doc.empty() && row.key != "transport"));
-        if (row.has_range() && !row.own_check) CHECK(!row.fix.empty());
+        // A plain range says "use a smaller number" above it; below it (or off its step) the row's words.
+        bool below_checked = row.min > 0 || row.step > 1;
+        if (row.has_range() && !row.own_check && (!row.plain_range || below_checked)) CHECK(!row.fix.empty());
+        if (row.plain_range && below_checked) CHECK(!row.below_min.empty());
         if (row.type == SettingType::Choice) CHECK(!row.choices.empty());
+        if (!row.noun.empty()) CHECK((row.type == SettingType::Choice && !row.fix.empty()));
     }
     // The faces' flags and keys live with the faces, not here.
     CHECK(config::setting_by_flag("hostlink-port") == nullptr);
@@ -156,7 +233,7 @@ TEST_CASE("each key and each flag is one row", "[settings]") {
 
 TEST_CASE("every row's JSON key is accepted by its loader", "[settings]") {
     for (const auto& row : config::all_settings()) {
-        if (row.key.empty() || row.section == Section::Profile) continue;
+        if (row.key.empty() || in_profile(row.section)) continue;
         auto doc = document(row.section, std::string(row.key), sample(row));
         INFO(doc.dump());
         CHECK_NOTHROW(parse(doc));
@@ -165,7 +242,25 @@ TEST_CASE("every row's JSON key is accepted by its loader", "[settings]") {
 
 TEST_CASE("a key's value outside its row's range is refused with the row's fix", "[settings]") {
     for (const auto& row : config::all_settings()) {
-        if (row.key.empty() || !row.has_range() || row.own_check || row.section == Section::Profile) continue;
+        if (row.key.empty() || !row.has_range() || row.own_check || in_profile(row.section)) continue;
+        if (row.plain_range) {   // JsonAt::unsigned_int's message above the range, the row's below it
+            if (row.max < config::kAnyUnsigned) {
+                auto max = static_cast<std::uint64_t>(row.max);
+                auto doc = document(row.section, std::string(row.key), max + 1);
+                INFO(doc.dump());
+                CHECK_THROWS_WITH(parse(doc), Catch::Contains("/" + std::string(row.key) + ": value " + std::to_string(max + 1) +
+                                                              " is larger than " + std::to_string(max) +
+                                                              "; use a smaller number"));
+            }
+            if (row.min > 0 || row.step > 1) {
+                auto low = row.min > 0 ? static_cast<std::uint64_t>(row.min) - 1 : std::uint64_t{row.step} + 1;
+                auto doc = document(row.section, std::string(row.key), low);
+                INFO(doc.dump());
+                CHECK_THROWS_WITH(parse(doc), Catch::Contains("/" + std::string(row.key) + ": " + std::string(row.below_min) +
+                                                              "; " + std::string(row.fix)));
+            }
+            continue;
+        }
         auto too_big = row.type == SettingType::Integer ? json(static_cast<std::uint64_t>(row.max) + 1) : json(row.max * 2 + 1);
         auto doc = document(row.section, std::string(row.key), too_big);
         INFO(doc.dump());
@@ -182,7 +277,9 @@ TEST_CASE("a key's value outside its row's range is refused with the row's fix",
 
 TEST_CASE("an unknown key is refused naming the key and the keys it may be", "[settings]") {
     for (auto section : {Section::Station, Section::Port, Section::Http, Section::Cpu, Section::Program,
-                         Section::TimerLimit, Section::Timing}) {
+                         Section::TimerLimit, Section::Timing, Section::Module, Section::Network, Section::MultiCpu,
+                         Section::Drive, Section::Label, Section::Structure, Section::Member, Section::Lockout,
+                         Section::Timer, Section::Counter, Section::CpuError}) {
         auto doc = document(section, "no_such_key", 1);
         std::string list;
         for (auto key : config::section_keys(section)) list += (list.empty() ? "" : ", ") + std::string(key);
@@ -193,6 +290,81 @@ TEST_CASE("an unknown key is refused naming the key and the keys it may be", "[s
     // In a plant too: a station entry's typo names the station.
     CHECK_THROWS_WITH(parse(json{{"stations", {{{"name", "a"}, {"prfile", "R08CPU"}}}}}),
                       Catch::Contains("station 'a': /prfile: unknown key; use one of: profile, bind"));
+}
+
+// Each nested object's keys, in the order its unknown-key error has always
+// listed them (tests and users read these messages).
+TEST_CASE("a nested object's keys are its rows, in the order its error lists them", "[settings]") {
+    using List = std::vector<std::string_view>;
+    const std::vector<std::pair<Section, List>> objects = {
+        {Section::Module, {"start_io", "model", "buffer_words", "head_address"}},
+        {Section::Network, {"number", "station", "master", "send", "device_sizes"}},
+        {Section::MultiCpu, {"number", "profile", "device_sizes", "devices"}},
+        {Section::Drive, {"dir", "capacity", "write_protect", "present", "passwords"}},
+        {Section::Label, {"name", "type", "device", "dims", "external", "comment"}},
+        {Section::Structure, {"name", "members", "comment"}},
+        {Section::Member, {"name", "type", "dims", "comment"}},
+        {Section::LabelsFile, {"labels", "structures"}},
+        {Section::Lockout, {"attempts", "seconds"}},
+        {Section::Timer, {"device", "points", "preset", "base_ms"}},
+        {Section::Counter, {"device", "points", "preset"}},
+        {Section::CpuError, {"code", "stop"}},
+        {Section::Frame1E, {"pc_type"}},
+        {Section::Pipeline, {"buffer", "over_limit"}},
+        {Section::EndCodes, {"not_supported", "out_of_range", "not_accessible", "unknown_device", "bad_unit",
+                             "online_change_refused", "system_protect"}},
+        {Section::Limits, {"batch_words", "batch_bits_binary", "batch_bits_ascii", "loopback_bytes", "random_read_points",
+                           "random_write_weight", "random_write_bits", "monitor_points", "block_count", "block_points",
+                           "extended_over_limit_code"}},
+        {Section::PointLimit, {"max", "end_code"}},
+        {Section::FormLimit, {"q", "iqr", "end_code"}},
+        {Section::ProfileTiming, {"ke_ms", "ke_ascii_ms", "kdt_ms", "kdt_ascii_ms", "scan_wait"}},
+        {Section::Difference, {"what", "manual", "hardware", "follows"}},
+        {Section::SizeRegister, {"device", "sd", "bits"}},
+    };
+    for (const auto& [section, keys] : objects) {
+        INFO(config::section_name(section));
+        CHECK(config::section_keys(section) == keys);
+    }
+    // Every object a row holds has rows, and every nested object is held by a row.
+    std::set<Section> held;
+    for (const auto& row : config::all_settings())
+        if (row.holds != Section::None) {
+            held.insert(row.holds);
+            INFO(row.key);
+            CHECK((row.type == SettingType::Object || row.type == SettingType::Array));
+            CHECK((!config::section_keys(row.holds).empty()));
+        }
+    for (const auto& [section, _] : objects)
+        if (section != Section::LabelsFile) CHECK(held.count(section) == 1);
+    // Every section has its path (config/settings.cpp's kSections).
+    for (int i = 0; i <= static_cast<int>(Section::SizeRegister); ++i)
+        CHECK_NOTHROW(config::section_name(static_cast<Section>(i)));
+}
+
+TEST_CASE("a profile's nested objects refuse an unknown key naming their rows", "[settings]") {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {R"("pipeline": {"buffer": 1, "zzz": 1})", "/pipeline/zzz: unknown key; use one of: buffer, over_limit"},
+        {R"("frame_1e": {"pc_type": "0041", "zzz": 1})", "/frame_1e/zzz: unknown key; use one of: pc_type"},
+        {R"("end_codes": {"zzz": "C059"})", "/end_codes/zzz: unknown key; use one of: not_supported, out_of_range"},
+        {R"("limits": {"batch_words": {"max": 960, "end_code": "C051", "zzz": 1}})",
+         "/limits/batch_words/zzz: unknown key; use one of: max, end_code"},
+        {R"("limits": {"block_count": {"q": 1, "iqr": 1, "end_code": "C054", "zzz": 1}})",
+         "/limits/block_count/zzz: unknown key; use one of: q, iqr, end_code"},
+        {R"("limits": {"loopback_bytes": 70000})", "/limits/loopback_bytes: value 70000 is larger than 65535; use a smaller number"},
+        {R"("timing": {"ke_ms": 1, "jitter": 0.1})", "/timing/jitter: unknown key; use one of: ke_ms, ke_ascii_ms, kdt_ms, kdt_ascii_ms, scan_wait"},
+        {R"("timing": {"ke_ms": 70000})", "/timing/ke_ms: out of range; use 0 to 60000 ms"},
+        {R"("manual_vs_hardware": {"x": {"what": "a", "manual": "b", "hardware": "c", "follows": "both"}})",
+         "/manual_vs_hardware/x/follows: must be \"manual\" or \"hardware\"; say which of the two the profile does"},
+        {R"("size_registers": [{"device": "D", "sd": 280, "bits": 32, "zzz": 1}])",
+         "/size_registers/0/zzz: unknown key; use one of: device, sd, bits"},
+        {R"("xy_radix": 17)", "/xy_radix: value 17 is larger than 16; use a smaller number"},
+    };
+    for (const auto& [member, message] : cases) {
+        auto text = R"({"extends": "R08CPU", "name": "X", "description": "x", )" + member + "}";
+        INFO(text);
+        CHECK_THROWS_WITH(config::parse_profile(text, "p.json"), Catch::Contains("p.json: " + message));
+    }
 }
 
 TEST_CASE("a profile takes the profile rows' keys, and only those", "[settings]") {
@@ -280,7 +452,7 @@ TEST_CASE("--help lists every flag of the table with its help", "[settings]") {
 
 TEST_CASE("the docs' option tables are the table's", "[settings]") {
     std::map<std::string, int> seen;
-    for (auto doc : {"docs/configuration.md", "docs/program.md"}) {
+    for (auto doc : {"docs/configuration.md", "docs/program.md", "docs/labels.md"}) {
         auto file = kSource / doc;
         auto text = read_text(file);
         auto list = blocks(text);
@@ -314,6 +486,24 @@ TEST_CASE("config/schema.json is the table's", "[settings]") {
         CHECK(schema["properties"]["ports"]["items"]["properties"].contains(std::string(key)));
     CHECK(schema["properties"].contains("threads"));
     CHECK(schema["additionalProperties"] == false);
+    // The nested objects too: each is its rows' keys and nothing else.
+    for (const auto& [pointer, section] : std::vector<std::pair<std::string, Section>>{
+             {"/networks/items", Section::Network}, {"/modules/items", Section::Module},
+             {"/cpus/items", Section::MultiCpu}, {"/drives/additionalProperties", Section::Drive},
+             {"/labels/items", Section::Label}, {"/structures/items", Section::Structure},
+             {"/structures/items/properties/members/items", Section::Member},
+             {"/cpu/properties/timers/items", Section::Timer}, {"/cpu/properties/counters/items", Section::Counter},
+             {"/cpu/properties/error", Section::CpuError}, {"/cpu/properties/password_lockout", Section::Lockout}}) {
+        INFO(pointer);
+        const auto& object = schema["properties"].at(json::json_pointer(pointer));
+        CHECK(object.at("additionalProperties") == false);
+        std::vector<std::string> keys, rows;
+        for (const auto& item : object.at("properties").items()) keys.push_back(item.key());
+        for (auto key : config::section_keys(section)) rows.emplace_back(key);
+        std::sort(rows.begin(), rows.end());
+        CHECK(keys == rows);
+    }
+    CHECK(schema["properties"].at(json::json_pointer("/cpu/properties/program/properties/wdt_ms/multipleOf")) == 10);
 }
 
 // The scenario loader names the keys it takes when it refuses one; the schema's

@@ -1,13 +1,13 @@
-#include "scenarios/pcap_writer.hpp"
+#include "station/capture/pcap_writer.hpp"
 
 #include <arpa/inet.h>
 
 #include <algorithm>
 #include <cstdlib>
 
-#include "config/config.hpp"
+#include "config/config_error.hpp"
 
-namespace slmp::scenarios {
+namespace slmp::station {
 
 namespace {
 
@@ -272,4 +272,4 @@ void PcapWriter::packet(TimePoint at, const Endpoint& from, const Endpoint& to, 
     out_.flush();
 }
 
-}  // namespace slmp::scenarios
+}  // namespace slmp::station

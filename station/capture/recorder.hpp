@@ -1,7 +1,9 @@
 // What --record and --record-pcap have in common: something told about every
 // connection and every exchange as they happen. The JSON-lines recording
 // (recording.hpp) and the pcap capture (pcap_writer.hpp) each implement it;
-// the server hook keeps a list of them, so both formats can be on at once.
+// the station's scenario hook (station/scenario_hook.cpp) keeps a list of them,
+// so both formats can be on at once. The format's reader, for replay and
+// slmp-replay, is scenarios/recording.hpp.
 #pragma once
 
 #include <chrono>
@@ -13,7 +15,9 @@
 
 #include "scenarios/scenario.hpp"
 
-namespace slmp::scenarios {
+namespace slmp::station {
+
+using scenarios::Transport;
 
 // Which connection an event belongs to, as a recording names it.
 struct RecordedLink {
@@ -49,4 +53,4 @@ public:
     }
 };
 
-}  // namespace slmp::scenarios
+}  // namespace slmp::station

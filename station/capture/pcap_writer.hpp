@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/recorder.hpp"
+#include "station/capture/recorder.hpp"
 
-namespace slmp::scenarios {
+namespace slmp::station {
 
 class PcapWriter : public Recorder {
 public:
@@ -74,4 +74,4 @@ private:
     std::uint16_t ip_id_ = 0;               // IPv4 identification, one per packet
 };
 
-}  // namespace slmp::scenarios
+}  // namespace slmp::station
