@@ -109,28 +109,24 @@ CpuConfig cpu(const JsonAt& at) {
 
 // "redundant": {"pair": "press-b", "system": "A", "switchover_ms": 100} (docs/plants.md, "Redundant pairs").
 RedundantConfig redundant(const JsonAt& at) {
-    at.only_keys({"pair", "system", "switchover_ms"});
+    check_keys(at, Section::Redundant);
     RedundantConfig r;
     r.pair = at["pair"].string();
     if (r.pair.empty()) at["pair"].fail("the pair needs the other station's name", "write \"pair\": \"press-b\"");
-    if (at.has("system")) {
-        const auto system = at["system"].string();
-        if (system != "A" && system != "B") at["system"].fail("unknown system '" + system + "'", "use \"A\" or \"B\"");
-        r.system = system[0];
-    }
-    if (at.has("switchover_ms")) r.switchover_ms = at["switchover_ms"].number(0, 60000, "use 0 to 60000 ms (default 100)");
+    if (at.has("system")) r.system = choice_setting(at, Section::Redundant, "system")[0];
+    if (at.has("switchover_ms")) r.switchover_ms = number_setting(at, Section::Redundant, "switchover_ms");
     return r;
 }
 
 // "multidrop": {"via": "line-1", "start_io": "0040", "number": 3} (docs/plants.md, "Multidrop stations").
 MultidropConfig multidrop(const JsonAt& at) {
-    at.only_keys({"via", "start_io", "number"});
+    check_keys(at, Section::Multidrop);
     MultidropConfig m;
     m.via = at["via"].string();
     if (m.via.empty()) at["via"].fail("a multidrop station needs the station whose serial module it hangs on", "write \"via\": \"line-1\"");
     m.module_io = io_number(at["start_io"]);
     if (m.module_io > 0x01FF) at["start_io"].fail("a serial module's start I/O is at most 1FF0", "use \"0000\"-\"1FF0\"");
-    m.number = static_cast<std::uint8_t>(at["number"].unsigned_int(31));
+    m.number = static_cast<std::uint8_t>(bounded_setting(at, Section::Multidrop, "number"));
     return m;
 }
 

@@ -136,10 +136,10 @@ constexpr Setting kSettings[] = {
      .help = "CPU No.2–4 of a multi-CPU system ([below](#modules-networks-and-cpus))", .holds = S::MultiCpu},
     {.section = S::Station, .key = "redundant", .flag = "", .type = T::Object, .default_text = "none",
      .help = "one CPU of a redundant pair: `{\"pair\": \"press-b\", \"system\": \"A\"}` "
-             "([plants.md](plants.md#redundant-pairs))"},
+             "([plants.md](plants.md#redundant-pairs))", .holds = S::Redundant},
     {.section = S::Station, .key = "multidrop", .flag = "", .type = T::Object, .default_text = "none",
      .help = "a multidrop station behind another station's serial module: `{\"via\": \"line-1\", \"start_io\": "
-             "\"0040\", \"number\": 3}` ([plants.md](plants.md#multidrop-stations))"},
+             "\"0040\", \"number\": 3}` ([plants.md](plants.md#multidrop-stations))", .holds = S::Multidrop},
 
     // --- "modules", "networks", "cpus": what is mounted beside CPU No.1 (hardware_config.cpp) --------------------------
     // The order of each object's rows is the order its unknown-key error lists them.
@@ -173,6 +173,23 @@ constexpr Setting kSettings[] = {
              "`[\"W100-W1FF\", \"B100-B1FF\"]` (B in whole words) ([plants.md](plants.md#link-devices))"},
     {.section = S::Network, .key = "device_sizes", .flag = "", .type = T::Object,
      .default_text = "16384, 16384, 32768, 512, 131072, 512", .help = "link device sizes: X, Y, B, SB, W, SW"},
+    // --- "redundant" and "multidrop": a plant station's place in a pair or on a multidrop line (hardware_config.cpp) ----
+    {.section = S::Redundant, .key = "pair", .flag = "", .type = T::String, .default_text = "required",
+     .help = "the name of the pair's other CPU, a station of the same plant", .required = true},
+    {.section = S::Redundant, .key = "system", .flag = "", .type = T::Choice, .choices = "A|B", .default_text = "A",
+     .help = "system A (control at power-on) or B; the other CPU is the other system", .fix = "use \"A\" or \"B\"",
+     .noun = "system"},
+    {.section = S::Redundant, .key = "switchover_ms", .flag = "", .type = T::Number, .max = 60000,
+     .default_text = "100", .help = "how long a system switch takes (requests by role answer 4248 meanwhile)",
+     .fix = "use 0 to 60000 ms (default 100)"},
+    {.section = S::Multidrop, .key = "via", .flag = "", .type = T::String, .default_text = "required",
+     .help = "the station whose serial module it hangs on", .required = true},
+    {.section = S::Multidrop, .key = "start_io", .flag = "", .type = T::String, .default_text = "required",
+     .help = "that serial module's start I/O, 4 hex digits `\"0000\"`–`\"1FF0\"` (the route's module I/O is it ÷ 16)",
+     .required = true},
+    {.section = S::Multidrop, .key = "number", .flag = "", .type = T::Integer, .max = 31, .default_text = "required",
+     .help = "the multidrop station No. 0–31", .fix = "use 0-31", .doc_type = "number", .required = true,
+     .plain_range = true},
     {.section = S::MultiCpu, .key = "number", .flag = "", .type = T::Integer, .min = 2, .max = 4,
      .default_text = "required", .help = "2, 3 or 4: reached with module I/O 03E1–03E3 (03E0 and 03FF are CPU No.1)",
      .fix = "use 2, 3 or 4", .doc_type = "number", .required = true,
@@ -601,6 +618,8 @@ constexpr SectionInfo kSections[] = {
     {S::Module, "modules[]", "hardware"},
     {S::Network, "networks[]", "hardware"},
     {S::MultiCpu, "cpus[]", "hardware"},
+    {S::Redundant, "redundant", "hardware"},
+    {S::Multidrop, "multidrop", "hardware"},
     {S::Drive, "drives.N", "cpu", true},
     {S::Label, "labels[]", "labels"},
     {S::Structure, "structures[]", "labels"},

@@ -36,6 +36,8 @@ enum class Section : std::uint8_t {
     Module,        // an entry of "modules"
     Network,       // an entry of "networks"
     MultiCpu,      // an entry of "cpus" (CPU No.2-4)
+    Redundant,     // "redundant": one CPU of a redundant pair
+    Multidrop,     // "multidrop": a station behind another's serial module
     Drive,         // a value of "drives" (keyed by drive number)
     Label,         // an entry of "labels"
     Structure,     // an entry of "structures"

@@ -17,16 +17,13 @@ using nlohmann::json;
 namespace client = slmp::protocol::client;
 
 TEST_CASE("GET /api/networks and /api/stations show the plant's networks and who relays to whom", "[route][plant][http]") {
-    SimOptions options;
-    options.plant = true;
-    options.config_json = R"({"bind": "127.0.0.1", "http": {"port": 0}, "stations": [
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0}, "stations": [
         {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "networks": [{"number": 1, "station": 1}]},
         {"name": "press", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 2}]},
         {"name": "relay", "profile": "R08CPU", "tcp_port": 0,
          "networks": [{"number": 1, "station": 4, "master": true}, {"number": 2, "station": 1}]},
         {"name": "packer", "profile": "R04CPU", "tcp_port": 0, "networks": [{"number": 2, "station": 3}]},
-        {"name": "island", "profile": "R04CPU", "tcp_port": 0}]})";
-    SimProcess sim(options);
+        {"name": "island", "profile": "R04CPU", "tcp_port": 0}]})"));
 
     auto networks = http_get(sim.http_port(), "/api/networks").json();
     CHECK(networks == json::parse(R"([
@@ -49,12 +46,9 @@ TEST_CASE("GET /api/networks and /api/stations show the plant's networks and who
 }
 
 TEST_CASE("a request routed through the Ethernet module shows its route in the target's request event", "[route][plant][http][events]") {
-    SimOptions options;
-    options.plant = true;
-    options.config_json = R"({"bind": "127.0.0.1", "http": {"port": 0}, "stations": [
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"port": 0}, "stations": [
         {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "networks": [{"number": 1, "station": 1}]},
-        {"name": "press", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 2}]}]})";
-    SimProcess sim(options);
+        {"name": "press", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 2}]}]})"));
     EventReader events(sim.http_port(), "", "/api/stations/press/events");
 
     client::FrameOptions routed;

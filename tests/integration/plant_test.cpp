@@ -48,14 +48,6 @@ std::uint16_t free_port_on_127_0_1_1() {
     return ntohs(addr.sin_port);
 }
 
-SimOptions plant_options(const std::string& config, std::vector<std::string> args = {}) {
-    SimOptions options;
-    options.plant = true;
-    options.config_json = config;
-    options.args = std::move(args);
-    return options;
-}
-
 }  // namespace
 
 TEST_CASE("plant: stations on two threads keep their own memory, identity and HTTP routes", "[plant]") {

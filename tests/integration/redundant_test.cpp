@@ -24,14 +24,6 @@ using slmp::protocol::Route;
 
 namespace {
 
-SimOptions plant(const std::string& config, std::vector<std::string> args = {}) {
-    SimOptions options;
-    options.plant = true;
-    options.config_json = config;
-    options.args = std::move(args);
-    return options;
-}
-
 // gw: the line's Ethernet module, station 1 of network 1; press-a (system A,
 // station 2) and press-b (system B, station 3): a redundant pair whose switch
 // takes 1000 ms on the new control system's clock.
@@ -119,7 +111,7 @@ nlohmann::json switched(const SimProcess& sim) {
 }  // namespace
 
 TEST_CASE("redundant pair: routes 03D0-03D3 before and after a system switch, binary and ASCII", "[route][plant][redundant]") {
-    SimProcess sim(plant(pair_plant(), {"--clock", "frozen"}));
+    SimProcess sim(plant_options(pair_plant(), {"--clock", "frozen"}));
     auto a = TcpClient::open(tcp_of(sim, "press-a"));
     auto b = TcpClient::open(tcp_of(sim, "press-b"));
     REQUIRE(show(ask(a, write_d100(0x0A0A))) == show(kWritten));
@@ -202,7 +194,7 @@ TEST_CASE("redundant pair: the control system's power cut and a scenario's syste
     // press-a's power fails at its 3rd read (a scenario fault) for 60 s.
     const auto cut = dir.write("cut.json", R"({"stations": "press-a", "faults": [
         {"do": "power_cycle", "off_ms": 60000, "match": {"command": "0401"}, "skip": 2, "count": 1}]})");
-    SimProcess sim(plant(R"({"bind": "127.0.0.1", "stations": [
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "stations": [
         {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "networks": [{"number": 1, "station": 1}]},
         {"name": "press-a", "profile": "R08PCPU", "tcp_port": 0, "networks": [{"number": 1, "station": 2}],
          "redundant": {"pair": "press-b", "switchover_ms": 0}, "scenarios": [")" + cut.string() + R"("]},
@@ -233,7 +225,7 @@ TEST_CASE("redundant pair: the control system's power cut and a scenario's syste
 }
 
 TEST_CASE("redundant pair: a scenario's system_switch action switches the systems", "[route][plant][redundant]") {
-    SimProcess sim(plant(pair_plant(R"(, "devices": {"D100": 2570})")));
+    SimProcess sim(plant_options(pair_plant(R"(, "devices": {"D100": 2570})")));
     auto gw = TcpClient::open(tcp_of(sim, "gw"));
     CHECK(show(ask(gw, read_d100(route(1, 3, 0x03D0)))) == show(word_answer(route(1, 3, 0x03D0), 0x0A0A)));
     auto started = http(sim.http_port(), "POST", "/api/stations/press-a/scenarios",
@@ -255,7 +247,7 @@ TEST_CASE("multidrop: a station behind another station's serial module, reached 
           "[route][plant][multidrop]") {
     // line: station 2 of network 1, with a serial module at start I/O 0040 (route module I/O 0004);
     // drop-3 and drop-7 hang on it as multidrop stations 3 and 7.
-    SimProcess sim(plant(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
         {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "udp_port": 0, "networks": [{"number": 1, "station": 1}]},
         {"name": "line", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 2}], "devices": {"D100": 1}},
         {"name": "drop-3", "profile": "Q26UDEHCPU", "tcp_port": 0, "multidrop": {"via": "line", "start_io": "0040", "number": 3},
@@ -290,7 +282,7 @@ TEST_CASE("multidrop: a station behind another station's serial module, reached 
 }
 
 TEST_CASE("file commands: only the request destinations of §3.1.4's table, 4B02 otherwise", "[route][files]") {
-    SimProcess sim(plant(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
         {"name": "cpu", "profile": "R08CPU", "tcp_port": 0}]})"));
     auto cpu = TcpClient::open(tcp_of(sim, "cpu"));
     for (const auto codec : {Codec::Binary, Codec::Ascii}) {

@@ -48,13 +48,6 @@ std::string line_plant() {
            cpu("relay-twin", "") + "," + cpu("packer-twin", "") + "]}";
 }
 
-SimOptions plant(const std::string& config) {
-    SimOptions options;
-    options.plant = true;
-    options.config_json = config;
-    return options;
-}
-
 
 
 // A route's fields as they travel (§3.1.3-§3.1.5), and where they sit in an answer.
@@ -225,7 +218,7 @@ Bytes read_d100(const Route& route) {
 
 TEST_CASE("routes: every device, label and file command through the Ethernet module reaches the routed CPU, byte-exact",
           "[route][plant]") {
-    SimProcess sim(plant(line_plant()));
+    SimProcess sim(plant_options(line_plant()));
     struct Target {
         const char* name;
         Route route;
@@ -261,7 +254,7 @@ TEST_CASE("routes: every device, label and file command through the Ethernet mod
 
 TEST_CASE("routes: unreachable network or station, another CPU number, a built-in port asked for another station",
           "[route][plant]") {
-    SimProcess sim(plant(line_plant()));
+    SimProcess sim(plant_options(line_plant()));
     auto gw = TcpClient::open(tcp_of(sim, "gw"));
     // Network 3 is on no station's module: 4A01.
     CHECK(show(ask(gw, read_d100(route_to(3, 2)))) ==
@@ -291,7 +284,7 @@ TEST_CASE("routes: at most 7 relay stations, the 8th answers 4A03", "[route][pla
                     std::to_string(k) + R"(, "station": 2}, {"number": )" + std::to_string(k + 1) + R"(, "station": 3}]})";
     stations += R"(, {"name": "end-7", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 8, "station": 9}]})";
     stations += R"(, {"name": "end-8", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 9, "station": 9}]})";
-    SimProcess sim(plant(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [)" + stations + "]}"));
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [)" + stations + "]}"));
     auto gw = TcpClient::open(tcp_of(sim, "gw"));
     CHECK(show(ask(gw, read_d100(route_to(8, 9)))) == show(hex("D0 00 08 09 FF 03 00 04 00 00 00 00 00")));
     CHECK(show(ask(gw, read_d100(route_to(9, 9)))) ==
@@ -303,7 +296,7 @@ TEST_CASE("routes: a routed station that does not answer gets the monitoring tim
     // request's monitoring timer (1 × 250 ms), then answers CF71.
     TempDir dir;
     const auto drop = dir.write("drop.json", R"({"stations": "packer", "faults": [{"do": "no_response"}]})");
-    SimProcess sim(plant(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
         {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "networks": [{"number": 1, "station": 1}]},
         {"name": "packer", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 2}],
          "scenarios": [")" + drop.string() + R"("]}]})"));
@@ -356,7 +349,7 @@ TEST_CASE("routes: a station's send range of LW is seen at the network's other s
           "[route][plant][link]") {
     // press is station 2: by default it sends J1\B100-B1FF and J1\W100-W1FF;
     // welder (station 3) sends J1\W200-W20F as configured.
-    SimProcess sim(plant(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
         {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "networks": [{"number": 1, "station": 1}]},
         {"name": "press", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 2}]},
         {"name": "welder", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 3, "send": ["W200-W20F"]}]},
@@ -382,7 +375,7 @@ TEST_CASE("routes: a relay station's faults refuse or drop the requests it passe
     const auto faults = dir.write("relay.json", R"({"stations": "relay", "faults": [
         {"do": "end_code", "end_code": "CF70", "match": {"command": "0401"}},
         {"do": "no_response", "match": {"command": "1401"}}]})");
-    SimProcess sim(plant(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
         {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "udp_port": 0, "networks": [{"number": 1, "station": 1}]},
         {"name": "relay", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 4}, {"number": 2, "station": 1}],
          "scenarios": [")" + faults.string() + R"("]},

@@ -91,6 +91,7 @@ json sample(const Setting& row) {
         {"wdt_ms", 200}, {"shard_host", "plant-{shard}.plant"}, {"upstream", "192.168.3.39:5000"},
         {"compare", false},   // true needs "upstream" beside it (checked in its own test)
         {"redundant", {{"pair", "press-b"}}}, {"multidrop", {{"via", "line"}, {"start_io", "0040"}, {"number", 3}}},
+        {"pair", "press-b"}, {"via", "line"},
         {"start_io", "0030"}, {"model", "Q62DA"}, {"head_address", "1008"}, {"dims", json::array({2})},
         {"comment", "a note"}, {"members", json::array()}};
     if (auto it = samples.find(std::string(row.key)); it != samples.end()) return it->second;
@@ -155,6 +156,16 @@ json document(Section section, const std::string& key, const json& value) {
             json member = {{"name", "pos"}, {"type", "Word [Signed]"}};
             member[key] = value;
             return {{"structures", json::array({{{"name", "Axis"}, {"members", json::array({member})}}})}};
+        }
+        case Section::Redundant: {   // a lone station takes the keys and ignores them (docs/plants.md)
+            json pair = {{"pair", "press-b"}};
+            pair[key] = value;
+            return {{"redundant", pair}};
+        }
+        case Section::Multidrop: {
+            json multidrop = {{"via", "line"}, {"start_io", "0040"}, {"number", 3}};
+            multidrop[key] = value;
+            return {{"multidrop", multidrop}};
         }
         case Section::Lockout: return {{"cpu", {{"password_lockout", {{key, value}}}}}};
         case Section::Timer:
@@ -278,6 +289,7 @@ TEST_CASE("a key's value outside its row's range is refused with the row's fix",
 TEST_CASE("an unknown key is refused naming the key and the keys it may be", "[settings]") {
     for (auto section : {Section::Station, Section::Port, Section::Http, Section::Cpu, Section::Program,
                          Section::TimerLimit, Section::Timing, Section::Module, Section::Network, Section::MultiCpu,
+                         Section::Redundant, Section::Multidrop,
                          Section::Drive, Section::Label, Section::Structure, Section::Member, Section::Lockout,
                          Section::Timer, Section::Counter, Section::CpuError}) {
         auto doc = document(section, "no_such_key", 1);
@@ -300,6 +312,8 @@ TEST_CASE("a nested object's keys are its rows, in the order its error lists the
         {Section::Module, {"start_io", "model", "buffer_words", "head_address"}},
         {Section::Network, {"number", "station", "master", "send", "device_sizes"}},
         {Section::MultiCpu, {"number", "profile", "device_sizes", "devices"}},
+        {Section::Redundant, {"pair", "system", "switchover_ms"}},
+        {Section::Multidrop, {"via", "start_io", "number"}},
         {Section::Drive, {"dir", "capacity", "write_protect", "present", "passwords"}},
         {Section::Label, {"name", "type", "device", "dims", "external", "comment"}},
         {Section::Structure, {"name", "members", "comment"}},
