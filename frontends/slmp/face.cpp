@@ -3,6 +3,7 @@
 #include "frontends/slmp/face.hpp"
 
 #include <cctype>
+#include <stdexcept>
 
 #include "config/json_path.hpp"
 
@@ -18,10 +19,11 @@ class Unit final : public frontends::Unit {
 public:
     const frontends::Face& face() const override { return slmp_face::face(); }
     bool timed() const override { return true; }
-    // Not called for a timed unit (frontends/face.hpp): a request that still
-    // came here waits, unanswered, as a frame not yet whole would.
+    // Never called: the transports hand a timed unit's bytes to the station
+    // (frontends/face.hpp, Unit::timed). A call is a bug in a transport, said
+    // loudly rather than leaving the connection waiting.
     frontends::Exchange stream(std::span<const std::uint8_t>, frontends::SessionState*, const frontends::Gate&) override {
-        return frontends::Exchange::more();
+        throw std::logic_error("SLMP's unit is timed: the station serves its requests, not Unit::stream()");
     }
 };
 
