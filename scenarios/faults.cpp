@@ -66,6 +66,8 @@ bool FaultSet::matches(const Fault& fault, const Incoming& incoming) {
     if (m.transport && incoming.peer.transport != *m.transport) return false;
     if (m.connection && incoming.connection != *m.connection) return false;
     if (m.client && incoming.peer.address != *m.client) return false;
+    if (m.route_network && r.header.route.network != *m.route_network) return false;
+    if (m.route_station && r.header.route.station != *m.route_station) return false;
     return true;
 }
 

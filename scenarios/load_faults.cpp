@@ -37,7 +37,8 @@ FaultMatch match(const JsonAt& at) {
                 m.frontend_commands.push_back(frontend_command(c, m.request_protocol));
         }
     } else {
-        at.only_keys({"protocol", "command", "subcommand", "devices", "access", "frame", "code", "transport", "connection", "client"});
+        at.only_keys({"protocol", "command", "subcommand", "devices", "access", "frame", "code", "transport", "connection", "client",
+                      "route"});
     }
     if (at.has("command") && m.request_protocol == kSlmp) m.commands = codes(at["command"]);
     if (at.has("subcommand")) m.subcommands = codes(at["subcommand"]);
@@ -66,6 +67,14 @@ FaultMatch match(const JsonAt& at) {
         if (*m.connection == 0) at["connection"].fail("connections are counted from 1", "write 1 for the first connection");
     }
     if (at.has("client")) m.client = at["client"].string();
+    if (at.has("route")) {   // {"network": 2, "station": 3}, either or both, as the request's route names them
+        auto route = at["route"];
+        route.only_keys({"network", "station"});
+        if (route.has("network")) m.route_network = static_cast<std::uint8_t>(route["network"].unsigned_int(0xFF));
+        if (route.has("station")) m.route_station = static_cast<std::uint8_t>(route["station"].unsigned_int(0xFF));
+        if (!m.route_network && !m.route_station)
+            route.fail("a route match needs \"network\" or \"station\"", "write {\"network\": 2} or {\"network\": 2, \"station\": 3}");
+    }
     return m;
 }
 

@@ -118,6 +118,9 @@ struct FaultMatch {
     std::optional<Transport> transport;
     std::optional<std::uint64_t> connection;      // the n-th connection since start (1 = first)
     std::optional<std::string> client;            // the client's IP address
+    // The network No. and station No. the request's route names (docs/plants.md,
+    // "Networks and routes"): a module's fault on the requests for one network.
+    std::optional<std::uint8_t> route_network, route_station;
     // A fault matches one protocol's requests (SLMP unless "protocol" says
     // otherwise); a front end's commands by their text ("RD", "24").
     Protocol request_protocol = kSlmp;

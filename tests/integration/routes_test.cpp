@@ -368,6 +368,25 @@ TEST_CASE("routes: a station's send range of LW is seen at the network's other s
     CHECK(show(ask(other, read_link_word("W100"))) == show(word_answer(0)));
 }
 
+TEST_CASE("routes: a module's fault matched on the route refuses the requests for one network only", "[route][plant]") {
+    // gw refuses every request for network 2 with CF70 ("a whole network that
+    // fails", docs/plants.md); network 1's stations are reached as before.
+    TempDir dir;
+    const auto faults = dir.write("gw.json", R"({"stations": "gw", "faults": [
+        {"do": "end_code", "end_code": "CF70", "match": {"route": {"network": 2}}}]})");
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"enabled": false}, "stations": [
+        {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "networks": [{"number": 1, "station": 1}],
+         "scenarios": [")" + faults.string() + R"("]},
+        {"name": "relay", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 4}, {"number": 2, "station": 1}],
+         "devices": {"D100": 4660}},
+        {"name": "packer", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 2, "station": 3}]}]})"));
+    auto gw = TcpClient::open(tcp_of(sim, "gw"));
+    CHECK(show(ask(gw, hex("50 00 02 03 FF 03 00 0C 00 01 00 01 04 00 00 64 00 00 A8 01 00"))) ==
+          show(hex("D0 00 02 03 FF 03 00 0B 00 70 CF 02 03 FF 03 00 01 04 00 00")));
+    CHECK(show(ask(gw, hex("50 00 01 04 FF 03 00 0C 00 01 00 01 04 00 00 64 00 00 A8 01 00"))) ==
+          show(hex("D0 00 01 04 FF 03 00 04 00 00 00 34 12")));
+}
+
 TEST_CASE("routes: a relay station's faults refuse or drop the requests it passes on", "[route][plant]") {
     // relay refuses every 0401 with CF70 and drops every 1401; the module
     // answers a dropped request CF71 when its monitoring timer (250 ms) runs out.

@@ -76,7 +76,7 @@ TEST_CASE("faults: a forced end code leaves memory alone", "[scenario][faults]")
     CHECK((snapshot(rig.cpu) == before));
 }
 
-TEST_CASE("faults: matching by command, subcommand, devices, access, frame, code, transport, connection, client", "[scenario][faults]") {
+TEST_CASE("faults: matching by command, subcommand, devices, access, frame, code, transport, connection, client, route", "[scenario][faults]") {
     auto fires = [](const std::string& match, const Bytes& frame, const std::string& client = "127.0.0.1",
                     std::uint64_t connection = 1, scenarios::Transport transport = scenarios::Transport::Tcp) {
         Rig rig(R"({"faults": [{"do": "no_response", "match": )" + match + "}]}");
@@ -101,6 +101,17 @@ TEST_CASE("faults: matching by command, subcommand, devices, access, frame, code
     CHECK_FALSE(fires(R"({"connection": 2})", kRead3E, "127.0.0.1", 1));
     CHECK(fires(R"({"client": "10.1.2.3"})", kRead3E, "10.1.2.3"));
     CHECK_FALSE(fires(R"({"client": "10.1.2.3"})", kRead3E));
+    // The route the request names: network 02, station 03 (a module's fault on one network).
+    const Bytes routed = bytes("50 00 02 03 FF 03 00 0C 00 10 00 01 04 00 00 64 00 00 A8 01 00");
+    CHECK(fires(R"({"route": {"network": 2}})", routed));
+    CHECK(fires(R"({"route": {"network": 2, "station": 3}})", routed));
+    CHECK(fires(R"({"route": {"station": 3}})", routed));
+    CHECK_FALSE(fires(R"({"route": {"network": 2, "station": 4}})", routed));
+    CHECK_FALSE(fires(R"({"route": {"network": 2}})", kRead3E));
+    CHECK_THROWS_WITH(Rig(R"({"faults": [{"do": "no_response", "match": {"route": {}}}]})"),
+                      Catch::Contains("a route match needs \"network\" or \"station\""));
+    CHECK_THROWS_WITH(Rig(R"({"faults": [{"do": "no_response", "match": {"route": {"net": 2}}}]})"),
+                      Catch::Contains("unknown key"));
 }
 
 TEST_CASE("faults: skip, count and the time window", "[scenario][faults]") {
