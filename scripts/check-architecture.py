@@ -2,7 +2,8 @@
 """True signposts: the project's map and comments point at what is there.
 
 Fails (exit 1, one line per finding: file:line: what; the fix) when
-  1. docs/architecture.md names a file or folder that does not exist;
+  1. docs/architecture.md names a file or folder that does not exist, or names
+     one by a path that does not start at a top-level folder;
   2. a source file names a repository file that does not exist (a path from a
      top-level folder, "station/station_snapshot.cpp", or a bare source file name,
      "station_snapshot.cpp", that no folder holds);
@@ -159,12 +160,27 @@ def scan(path, check_paths):
                 report(path, n, f"names '{token}', which no folder holds", "point it at the file that holds it now")
 
 
+# In the map, a backticked path that does not start at a top-level folder
+# ("`slmp/face.cpp`", "`capture/`") names a file only a reader who guesses
+# its folder can find: the map writes every path from the repository's root.
+RELATIVE_PATH = re.compile(r"`((?!(?:%s)/)[A-Za-z_][\w.-]*/(?:[\w./*{},-]*(?:\.[\w*}]+|/))?)`" % "|".join(TOP))
+
+
+def check_map_paths():
+    path = "docs/architecture.md"
+    for n, line in enumerate(open(os.path.join(ROOT, path), encoding="utf-8").read().splitlines(), 1):
+        for token in RELATIVE_PATH.findall(URL.sub(" ", line)):
+            report(path, n, f"names '{token}', not a path from the repository's root",
+                   "write it whole, from its top-level folder (e.g. 'frontends/slmp/face.cpp')")
+
+
 def main():
     if "docs/architecture.md" not in FILES:
         print("check-architecture: docs/architecture.md is missing")
         return 1
     # 1 and 3 for the map; its bare names ("station_log.*") are checked like a comment's.
     scan("docs/architecture.md", check_paths=True)
+    check_map_paths()
     for f in FILES:
         if f == "docs/architecture.md" or f.startswith("scripts/check-architecture"):
             continue
