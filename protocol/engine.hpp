@@ -7,6 +7,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -66,15 +67,18 @@ struct Session {
     // compares and Communication Setting Get 0E45 reports (docs/nodes.md).
     std::array<std::uint8_t, 4> peer_ipv4{};
     std::uint16_t local_port = 0;
-    // The station's clock when the request is served (set with the above): the
-    // node's 10 s parameter-write timeout runs on it. Unset (a bare engine):
-    // the CPU's last scan stands in (request_time).
+    // When a request is served, for the few commands that need it (the node's
+    // 10 s parameter-write timeout, the remote password's lock-out): `now` when
+    // set (a test's fixed instant), else the station's clock, read only then
+    // (station::Station::new_session sets it, so a request pays for no clock
+    // read it does not use). Neither (a bare engine): the CPU's last scan.
     std::chrono::steady_clock::time_point now{};
+    std::function<std::chrono::steady_clock::time_point()> clock;
 };
 
-// When a request is served, on the station's clock (Session::now), else the CPU's last scan.
 inline std::chrono::steady_clock::time_point request_time(const Session& session, const devicemodel::Cpu& cpu) {
-    return session.now != std::chrono::steady_clock::time_point{} ? session.now : cpu.runtime().now();
+    if (session.now != std::chrono::steady_clock::time_point{}) return session.now;
+    return session.clock ? session.clock() : cpu.runtime().now();
 }
 
 // Whether the remote password guards this connection: the CPU has one and the

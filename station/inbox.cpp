@@ -9,13 +9,6 @@ using TimePoint = std::chrono::steady_clock::time_point;
 
 namespace {
 
-// A request still waiting for its END, as its holder sees it before each
-// wait: its deadline (its arrival plus its monitoring timer; none: it waits
-// for the END alone).
-struct Awaiting {
-    std::optional<TimePoint> deadline;
-};
-
 // Where an end_of_scan wait ended: at the END after it began (`served_at`:
 // that END's time), or not (its deadline passed or it no longer waits: now).
 struct EndOfScanWait {
@@ -24,21 +17,18 @@ struct EndOfScanWait {
 };
 
 // end_of_scan (docs/timing.md): a whole request waits for the END after its
-// arrival, or until its monitoring timer runs out, whichever comes first —
-// the one wait of a stream's first request (Inbox) and of a datagram
-// (HeldDatagram). `awaiting` says before each wait whether a request still
-// waits (nullopt: none does — it is gone, the connection closed or the
-// station stopped) and its deadline; `wait_once` waits on the clock once, for
-// the END after `seen` or the deadline, whichever comes first.
-StrandTask<EndOfScanWait> wait_for_end(ScanLoop& scan, std::function<std::optional<Awaiting>()> awaiting,
-                                       std::function<StrandTask<>(std::uint64_t seen, std::optional<TimePoint> deadline)> wait_once) {
+// arrival, or until its monitoring timer runs out (`deadline`; none: the END
+// alone), whichever comes first — the one wait of a stream's first request
+// (Inbox) and of a datagram (HeldDatagram), while `waiting()` holds (the
+// connection open, the station running). `wait_once` waits on the clock once,
+// for the END after `seen` or the deadline.
+StrandTask<EndOfScanWait> wait_for_end(ScanLoop& scan, std::optional<TimePoint> deadline, std::function<bool()> waiting,
+                                       std::function<StrandTask<>(std::uint64_t seen)> wait_once) {
     const auto seen = scan.scans();
-    for (;;) {
-        const auto request = awaiting();
-        if (!request) break;
+    while (waiting()) {
         if (scan.scans() > seen) co_return EndOfScanWait{true, scan.end_time(seen + 1)};
-        if (request->deadline && scan.clock().now() >= *request->deadline) break;
-        co_await wait_once(seen, request->deadline);
+        if (deadline && scan.clock().now() >= *deadline) break;
+        co_await wait_once(seen);
     }
     co_return EndOfScanWait{false, scan.clock().now()};
 }
@@ -160,18 +150,15 @@ StrandTask<> Inbox::hold_for_clock() {
     bool at_end = false;
     auto served_at = scan.clock().now();
     if (end_of_scan) {
-        auto first_request = [this, &scan]() -> std::optional<Awaiting> {
-            const auto first = station_.next_request(unserved(), policy_);
-            if (!first || scan.stopped() || !feed_->open()) return std::nullopt;
-            Awaiting request;
-            if (first->timer.count() > 0) request.deadline = arrival(consumed_ + first->end) + first->timer;
-            return request;
-        };
-        const auto waited = co_await wait_for_end(scan, first_request, [this](std::uint64_t seen, std::optional<TimePoint> at) {
-            return wait(seen, at);   // reading the connection on meanwhile
-        });
-        at_end = waited.at_end;
-        served_at = waited.served_at;
+        if (const auto first = station_.next_request(unserved(), policy_)) {
+            std::optional<TimePoint> deadline;
+            if (first->timer.count() > 0) deadline = arrival(consumed_ + first->end) + first->timer;
+            const auto waited = co_await wait_for_end(
+                scan, deadline, [this, &scan] { return !scan.stopped() && feed_->open(); },
+                [this, deadline](std::uint64_t seen) { return wait(seen, deadline); });   // reading the connection on meanwhile
+            at_end = waited.at_end;
+            served_at = waited.served_at;
+        }
     }
     if (!feed_->open()) co_return;
     if (!held_) begin_frames();   // a held request resumes the turn it was scheduled in
@@ -271,11 +258,10 @@ StrandTask<bool> HeldDatagram::wait() {
     // end_of_scan: the END after the arrival, or the monitoring timer first.
     const auto queued = station_.next_request(ticket_.bytes, policy_);
     if (queued && queued->start == 0) {
-        Awaiting request;
-        if (queued->timer.count() > 0) request.deadline = arrival_ + queued->timer;
-        const auto waited = co_await wait_for_end(
-            scan, [&scan, request]() -> std::optional<Awaiting> { return scan.stopped() ? std::nullopt : std::optional(request); },
-            [&scan](std::uint64_t seen, std::optional<TimePoint> at) { return scan.until_end_or(seen, at); });
+        std::optional<TimePoint> deadline;
+        if (queued->timer.count() > 0) deadline = arrival_ + queued->timer;
+        const auto waited = co_await wait_for_end(scan, deadline, [&scan] { return !scan.stopped(); },
+                                                  [&scan, deadline](std::uint64_t seen) { return scan.until_end_or(seen, deadline); });
         end_of_scan_ = Station::end_of_scan_service(arrival_, queued->timer, waited.served_at, waited.at_end);
     }
     co_return !scan.stopped();

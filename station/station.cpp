@@ -161,6 +161,8 @@ protocol::Session Station::new_session(const config::PortConfig& port) {
     session.port.remote_password = port.remote_password;
     session.port.online_change = port.online_change.value_or(engine_.port().online_change);
     session.own = port.numbers;
+    // The node's write timeout and the password lock-out run on the station's clock (docs/nodes.md).
+    session.clock = [this] { return scan_ ? scan_->clock().now() : cpu_.runtime().now(); };
     return session;
 }
 
@@ -195,6 +197,10 @@ void Station::join(const NetworkMap& networks) {
 std::optional<Handled> Station::route(protocol::Request& request, std::span<const std::uint8_t> input,
                                       protocol::DataCodePolicy policy) {
     if (!network_map_ || request.routed || !request.complete() || !request.has_command) return std::nullopt;
+    // The own station (most requests): only a CPU of a redundant pair may send
+    // it on (03D0-03D3 naming its partner), or refuse it while the pair switches.
+    if (!request.elsewhere && (request.route_error != protocol::EndCode::Ok || !engine_.identity().redundant))
+        return std::nullopt;
     const auto& route = request.header.route;
     const auto* row = request.spec ? request.spec : protocol::find_any_row(request.command);
     const bool file = row && row->file_route();
@@ -202,11 +208,8 @@ std::optional<Handled> Station::route(protocol::Request& request, std::span<cons
     if (request.elsewhere) {
         found = network_map_->find(*this, route.network, route.station);
     } else {
-        // The own station: only a CPU of a redundant pair may send it on (03D0-03D3
-        // naming its partner), or refuse it while the pair switches.
         const bool by_pair = route.module_io >= 0x03D0 && route.module_io <= 0x03D3;
-        if (request.route_error != protocol::EndCode::Ok || !engine_.identity().redundant || !(by_pair || file))
-            return std::nullopt;
+        if (!(by_pair || file)) return std::nullopt;
         found.relay.hops.push_back(this);
         found.relay.target = this;
     }
@@ -433,7 +436,6 @@ Handled Station::serve(protocol::Request request, std::span<const std::uint8_t> 
     session.file_owner = protocol::lock_owner(peer, session.id);   // UDP: each peer its own (docs/files.md)
     session.peer_ipv4 = protocol::peer_ipv4(peer);                 // the node commands' sender (docs/nodes.md)
     session.local_port = peer.local_port;
-    session.now = scan_ ? scan_->clock().now() : cpu_.runtime().now();   // the node's write timeout (docs/nodes.md)
     auto started = std::chrono::steady_clock::now();
     // Decoded once (handle() or schedule()); the scenario hook sits between decode and execute.
     scenarios::Incoming incoming{std::move(request)};

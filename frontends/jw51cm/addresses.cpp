@@ -13,17 +13,6 @@ bool all_digits(std::string_view text) {
     return true;
 }
 
-// Octal digits to a number; nullopt when one is 8 or 9 (or there are too many).
-std::optional<std::uint32_t> octal(std::string_view digits) {
-    if (digits.empty() || digits.size() > 7) return std::nullopt;
-    std::uint32_t value = 0;
-    for (char c : digits) {
-        if (c < '0' || c > '7') return std::nullopt;
-        value = value * 8 + static_cast<std::uint32_t>(c - '0');
-    }
-    return value;
-}
-
 std::string octal_text(std::uint32_t value) {
     std::string text;
     do {
@@ -66,6 +55,16 @@ std::optional<devicemodel::DeviceAddress> byte_cell(const MemoryMap& map, std::s
 }
 
 }  // namespace
+
+std::optional<std::uint32_t> octal(std::string_view digits) {
+    if (digits.empty() || digits.size() > 7) return std::nullopt;
+    std::uint32_t value = 0;
+    for (char c : digits) {
+        if (c < '0' || c > '7') return std::nullopt;
+        value = value * 8 + static_cast<std::uint32_t>(c - '0');
+    }
+    return value;
+}
 
 std::optional<devicemodel::DeviceAddress> resolve_name(const MemoryMap& map, std::string_view text, std::string* error) {
     error->clear();

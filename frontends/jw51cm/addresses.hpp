@@ -16,6 +16,11 @@
 
 namespace slmp::jw51cm {
 
+// Octal digits to a number ("1410" -> 0o1410); nullopt when one is 8 or 9, or
+// there are none or more than 7. Sharp's addresses, T/C numbers and parameter
+// addresses are all written this way.
+std::optional<std::uint32_t> octal(std::string_view digits);
+
 // nullopt with *error empty: `text` is not a JW name (try the device table).
 // nullopt with *error set: it is one, and the message says what is wrong.
 std::optional<devicemodel::DeviceAddress> resolve_name(const MemoryMap& map, std::string_view text, std::string* error);

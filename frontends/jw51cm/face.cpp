@@ -65,14 +65,8 @@ void parse_parameters(const JsonAt& at, Options& options) {
     at.expect_object();
     for (const auto& [key, _] : at.json().items()) {
         auto value = at[key];
-        std::size_t used = 0;
-        unsigned long address = 0;
-        try {
-            address = std::stoul(key, &used, 8);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used != key.size() || address < kDesignatedParameters || address >= kRingParameters + 8 * kRingBuffers)
+        const auto address = octal(key).value_or(0);
+        if (address < kDesignatedParameters || address >= kRingParameters + 8 * kRingBuffers)
             value.fail("'" + key + "' is not a buffer parameter address",
                        "write it in octal, 1000-1377 (designated buffers) or 1400-1577 (ring buffers), e.g. \"1410\"");
         auto bytes = value.json().is_string() ? hex_bytes(value.string()) : std::nullopt;
@@ -234,18 +228,12 @@ public:
             auto attributes = at["timer_attributes"];
             attributes.expect_object();
             for (const auto& [number, _] : attributes.json().items()) {
-                std::size_t used = 0;
-                unsigned long value = 0;
-                try {
-                    value = std::stoul(number, &used, 8);
-                } catch (const std::exception&) {
-                    used = 0;
-                }
-                if (used != number.size() || value >= options.timers)
+                const auto value = octal(number);
+                if (!value || *value >= options.timers)
                     attributes[number].fail("'" + number + "' is not a T/C number", "write it in octal, 0000-1777 (TMR0002 is \"0002\")");
                 auto code = attributes[number].hex_code();
                 if (code > 0x0F) attributes[number].fail("not a T/C attribute", "use 0000-000F (04 TMR, 02 CNT, 08 DTMR BCD, ...)");
-                options.timer_attributes[static_cast<std::uint32_t>(value)] = static_cast<std::uint8_t>(code);
+                options.timer_attributes[*value] = static_cast<std::uint8_t>(code);
             }
         }
         if (at.has("parameters")) parse_parameters(at["parameters"], options);
