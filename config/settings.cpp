@@ -448,7 +448,7 @@ constexpr Setting kSettings[] = {
      .fix = "use \"stop\" or \"continue\"",
      .doc = "`stop`: an operation error ends the scan and stops the CPU (stop error, SD203 = 0x0042, Y off, Remote "
             "RUN answers C05F until RESET); `continue`: SM0/SM1 (and SM56 on Q/L) and SD0 are set, the failing "
-            "instruction does nothing, execution goes on; 1617 Clear Error clears them", .noun = "mode"},
+            "instruction does nothing, execution goes on; SM50 (error reset) clears them at END ([cpu-runtime.md](cpu-runtime.md#remote-operations-and-their-end-codes): a CPU's built-in port refuses 1617)", .noun = "mode"},
     {.section = S::Program, .key = "wdt_ms", .flag = "", .type = T::Integer, .min = 10, .max = 2000,
      .default_text = "200", .help = "the scan's watchdog time, in steps of 10 ms",
      .fix = "use 10 to 2000 in steps of 10 (default 200)",

@@ -40,6 +40,7 @@ void Runtime::scan(DeviceMemory& memory, TimePoint now, const CalendarTime& cale
     }
     auto elapsed = duration_cast<microseconds>(std::max(now - last_scan_, TimePoint::duration::zero()));
     publish_clocks(memory, now, calendar);
+    error_reset(memory);
     if (state_.state() != RunState::Run) return;   // STOP/PAUSE: nothing times
 
     timers_.run(memory, elapsed);
@@ -74,6 +75,23 @@ void Runtime::publish_clocks(DeviceMemory& memory, TimePoint now, const Calendar
     special::publish_clock_pulses(memory, since);
     special::publish_second_counter(memory, since);
     special::publish_calendar(memory, calendar, family_);
+}
+
+// SM50 Error reset, the CPU's own way to clear a continuation error (Clear
+// Error 1617 belongs to a module port; a CPU's built-in port refuses it,
+// docs/cpu-runtime.md). An OFF->ON change seen at END clears SM0/SM1/SD0; a
+// stop error stays until a reset. iQ-R and iQ-F turn SM50 off again when done
+// ("error reset completed"); on Q and L it stays as the program left it.
+void Runtime::error_reset(DeviceMemory& memory) {
+    const bool on = special::sm(memory, 50);
+    const bool rising = on && !error_reset_was_on_;
+    error_reset_was_on_ = on;
+    if (!rising) return;
+    change(memory, [&] { return state_.clear_error(); });
+    if (family_ == Family::IQR || family_ == Family::IQF) {
+        special::set_sm(memory, 50, false);
+        error_reset_was_on_ = false;
+    }
 }
 
 void Runtime::record_scan_time(DeviceMemory& memory, microseconds elapsed) {

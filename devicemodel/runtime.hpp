@@ -112,6 +112,7 @@ private:
     void settle(DeviceMemory& memory, RunState before);
     void publish_clocks(DeviceMemory& memory, TimePoint now, const CalendarTime& calendar);
     void record_scan_time(DeviceMemory& memory, std::chrono::microseconds elapsed);
+    void error_reset(DeviceMemory& memory);
     void power_on(DeviceMemory& memory);
     void clear(DeviceMemory& memory, ClearScope scope);
 
@@ -128,6 +129,7 @@ private:
     TimePoint power_on_{};
     TimePoint last_scan_{};
     bool first_scan_ = false;
+    bool error_reset_was_on_ = false;   // SM50 at the last END: its OFF->ON change resets the error
     std::optional<std::chrono::microseconds> scan_min_, scan_max_;
     std::chrono::microseconds scan_current_{}, scan_initial_{};
 };

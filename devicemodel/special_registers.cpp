@@ -31,6 +31,10 @@ std::uint32_t sd(const DeviceMemory& memory, std::uint32_t number) {
     return number < memory.size(Area::SD) ? memory.value(sd_spec(), number) : 0;
 }
 
+bool sm(const DeviceMemory& memory, std::uint32_t number) {
+    return number < memory.size(Area::SM) && memory.bit(sm_spec(), number);
+}
+
 void publish_constants(DeviceMemory& memory) {
     set_sm(memory, 400, true);
     set_sm(memory, 401, false);

@@ -3,6 +3,7 @@
 // agree on all of these; only the calendar layout differs by family).
 //
 //   SM0/SM1  error flags           SD0     latest error code
+//   SM50     error reset (written by the program or a client; read at END)
 //   SM400/401 always ON / OFF      SM402/403 ON / OFF during the first scan after RUN
 //   SM409 10 ms, SM410 100 ms, SM411 200 ms, SM412 1 s, SM413 2 s clocks,
 //   SM414 2n s clock (n = SD414), SM415 2n ms clock (n = SD415)
@@ -40,6 +41,7 @@ namespace special {
 void set_sm(DeviceMemory& memory, std::uint32_t number, bool on);
 void set_sd(DeviceMemory& memory, std::uint32_t number, std::uint32_t value);
 std::uint32_t sd(const DeviceMemory& memory, std::uint32_t number);
+bool sm(const DeviceMemory& memory, std::uint32_t number);
 
 // Power-on values: SM400 ON, SM401 OFF, SD414/SD415 = 30 (the CPU's defaults).
 void publish_constants(DeviceMemory& memory);

@@ -24,17 +24,18 @@ constexpr Families kNotQLFx5 = kNotQL & kNotFx5;
 // (SLMP Reference Manual §5.1; Q/L, QJ71E71 and FX5 ports answer C059).
 constexpr Families kIqrOnly = family_bit(Family::IQR);
 
-constexpr std::uint8_t kExt = kExtended;
-constexpr std::uint8_t kCtl = kControlCpuOnly;
-constexpr std::uint8_t kW = kWrites;
-constexpr std::uint8_t kFile = kFileRoute;
-constexpr std::uint8_t kOp = kOperator;
+constexpr std::uint16_t kExt = kExtended;
+constexpr std::uint16_t kCtl = kControlCpuOnly;
+constexpr std::uint16_t kW = kWrites;
+constexpr std::uint16_t kFile = kFileRoute;
+constexpr std::uint16_t kOp = kOperator;
+constexpr std::uint16_t kDev = kConnectedDevice;
 // Remote password rows: exempt from the lock they open.
-constexpr std::uint8_t kPw = kPasswordExempt;
+constexpr std::uint16_t kPw = kPasswordExempt;
 // The node commands (JA §3.12-3.14): on "node_commands" ports only; the
 // parameter write sequence's rows stay served while it runs.
-constexpr std::uint8_t kNd = kNode;
-constexpr std::uint8_t kPwr = kNode | kParameterWrite;
+constexpr std::uint16_t kNd = kNode;
+constexpr std::uint16_t kPwr = kNode | kParameterWrite;
 
 // Sorted by (command, subcommand); checked below. Columns: command, subcommand,
 // name, handler, decoder (device commands), device form, access, flags, families.
@@ -118,7 +119,7 @@ constexpr std::array kCommands = {
     CommandSpec{0x141B, 0x0000, "Label Write Random", label_write_random, nullptr, Q, None, kW, kIqrOnly},
     CommandSpec{0x1601, 0x0000, "Extend Unit Write", extend_unit_write, nullptr, Q, None, kW},
     CommandSpec{0x1613, 0x0000, "Memory Write", memory_write, nullptr, Q, None, kCtl | kW, kNotQLFx5},
-    CommandSpec{0x1617, 0x0000, "Clear Error", clear_error, nullptr, Q, None, kCtl | kOp},
+    CommandSpec{0x1617, 0x0000, "Clear Error", clear_error, nullptr, Q, None, kCtl | kOp | kDev},
     CommandSpec{0x1630, 0x0000, "Remote Password Unlock", password_unlock, nullptr, Q, None, kPw},
     CommandSpec{0x1631, 0x0000, "Remote Password Lock", password_lock, nullptr, Q, None, kPw},
     // File control (SLMP Reference Manual §5.8): 0000 Q/L, 0004 L, 0040 iQ-R; the
@@ -164,7 +165,7 @@ static_assert(sorted_and_unique(), "kCommands must be sorted by (command, subcom
 // The per-command facts must agree across a command's rows, since the request
 // path asks them of any row (find_any_row) before the subcommand is known.
 constexpr bool per_command_flags_agree() {
-    constexpr std::uint8_t kPerCommand = kPasswordExempt | kOperator | kWrites | kNode | kParameterWrite;
+    constexpr std::uint16_t kPerCommand = kPasswordExempt | kOperator | kWrites | kNode | kParameterWrite | kConnectedDevice;
     for (std::size_t i = 1; i < kCommands.size(); ++i) {
         const auto& a = kCommands[i - 1];
         const auto& b = kCommands[i];

@@ -57,7 +57,7 @@ using Handler = EndCode (*)(CommandContext&);
 using Decoder = void (*)(DecodeContext&);
 
 // Per-row flags (a bit set).
-enum Flag : std::uint8_t {
+enum Flag : std::uint16_t {
     kExtended = 1 << 0,        // 008x: devices in the extended layout (Appendix 1)
     kControlCpuOnly = 1 << 1,  // refused for CPU No.2–4 of a multi-CPU system (Appendix 3)
     kPasswordExempt = 1 << 2,  // served on a connection the remote password locks (§6)
@@ -74,6 +74,11 @@ enum Flag : std::uint8_t {
     // I/O No. may be only 03FF, 03D2 or 03D3 (and 03E0-03E3 of a multi-CPU
     // system, Appendix 3); 03D0/03D1 and a multidrop station are refused.
     kFileRoute = 1 << 7,
+    // Clear Error 1617 clears the error of the SLMP device the client is
+    // connected to. The Chinese manual's access table marks the iQ-R, Q and L
+    // CPUs' built-in ports × (they answer "not supported"); a module port
+    // (an Ethernet module in front of the CPU) and the iQ-F port serve it.
+    kConnectedDevice = 1 << 8,
 };
 
 // The port families that serve a command (a bit per devicemodel::Family).
@@ -88,7 +93,7 @@ struct CommandSpec {
     Decoder decode = nullptr;      // device commands: request data -> Operands, before the scenario hook
     DeviceForm form = DeviceForm::Q;
     Access access = Access::None;
-    std::uint8_t flags = 0;
+    std::uint16_t flags = 0;
     Families families = 0xFF;      // every family unless the row says otherwise
 
     bool extended() const { return flags & kExtended; }
@@ -99,6 +104,7 @@ struct CommandSpec {
     bool node_command() const { return flags & kNode; }
     bool parameter_write() const { return flags & kParameterWrite; }
     bool file_route() const { return flags & kFileRoute; }
+    bool connected_device() const { return flags & kConnectedDevice; }
     bool served_by(devicemodel::Family family) const { return families & family_bit(family); }
     // A device command: it names devices, and its 00□2/00□3 forms are the iQ-R ones.
     bool device_command() const { return decode != nullptr; }

@@ -64,6 +64,13 @@ bool locked_out(const devicemodel::Cpu& cpu, const Session& session, std::uint16
     return !row || !row->password_exempt();
 }
 
+// A CPU's own Ethernet port, not a module in front of it: the ports the
+// Chinese manual's access table marks × for Clear Error 1617.
+bool cpu_built_in_port(const devicemodel::CpuProfile& cpu, const PortProfile& port) {
+    using devicemodel::Family;
+    return !port.relays && (cpu.family == Family::IQR || cpu.family == Family::QnU || cpu.family == Family::L);
+}
+
 // The port's own refusals, before the table is asked for the subcommand: a
 // command the port family does not serve (or the profile adds), a device
 // command in the iQ-R form on a port that has only the Q form.
@@ -72,6 +79,7 @@ std::optional<Outcome> port_refusal(const devicemodel::CpuProfile& cpu, const Po
     const auto* row = find_any_row(request.command);
     const auto& extra = profile.unsupported_commands;
     if ((row && !row->served_by(cpu.family)) || (row && row->node_command() && !profile.node_commands) ||
+        (row && row->connected_device() && cpu_built_in_port(cpu, profile)) ||
         std::find(extra.begin(), extra.end(), request.command) != extra.end())
         return reply.error(end_code(profile.not_supported_code),
                            "command " + devicemodel::hex4(request.command) + " is not supported by " + cpu.name);

@@ -750,7 +750,7 @@ class BufferWorker(Worker):
 
 class RemoteWorker(Worker):
     """0101 type name, 0619 self test, 1002 STOP / 1003 PAUSE / 1001 RUN (each
-    hold taken and released on the same connection), 1617 clear error; SD203
+    hold taken and released on the same connection), SM50 error reset; SD203
     checked after every state change."""
 
     def __init__(self, ctx, name):
@@ -785,7 +785,9 @@ class RemoteWorker(Worker):
         self.remote('1003 remote PAUSE', Enc(ascii_code).head(0x1003, 0).u16(1), 0x23, ascii_code)
         self.ctx.stop.wait(self.rng.uniform(0.2, 1.0))
         self.remote('1001 remote RUN', Enc(ascii_code).head(0x1001, 0).u16(1).u8(0).u8(0), 0x00, ascii_code)
-        self.call('1617 clear error', Enc(ascii_code).head(0x1617, 0))
+        # SM50 error reset: the CPU's own error clear (its built-in port refuses 1617).
+        self.call('1401 SM50 error reset', Enc(ascii_code).head(0x1401, 1).device('SM', 50).u16(1)
+                  .raw('1' if ascii_code else b'\x10'))
         self.link.close()
         self.ctx.stop.wait(self.rng.uniform(2, 6))
 

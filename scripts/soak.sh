@@ -26,7 +26,7 @@
 #   block        0406/1406 word blocks (D7500-D7999) and bit blocks (B0-B3FF)
 #   monitor      0801/0802 entry and execute monitor (D8000-D8199, M8000-M8255), registration per connection
 #   buffer       0613/1613, 0601/1601 (03E0 and U3), U3E0\G (0082) and U3\G (0080): U3E0\G0-12287, U3\G0-4095
-#   remote       0101, 0619, 1630, 1002 STOP / 1003 PAUSE / 1001 RUN with SD203 checked after each, 1617
+#   remote       0101, 0619, 1630, 1002 STOP / 1003 PAUSE / 1001 RUN with SD203 checked after each, SM50 error reset
 #   chaos        every command above that the faults match, in D9000-D9999 (binary and ASCII, 3E and 4E)
 #   slmp-bench   3 s bursts every 15 s: TCP and UDP, binary and ASCII, 3E and 4E, depth 8 (D0-D959, M0-M63)
 #   http         every second: /api/devices, /api/state, /api/connections, /api/faults, /api/scenarios,

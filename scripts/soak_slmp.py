@@ -13,7 +13,7 @@ import time
 DEVICES = {
     'D': (0xA8, 10, False), 'W': (0xB4, 16, False), 'SD': (0xA9, 10, False),
     'M': (0x90, 10, True), 'B': (0xA0, 16, True), 'Y': (0x9D, 16, True), 'X': (0x9C, 16, True),
-    'G': (0xAB, 10, False),
+    'G': (0xAB, 10, False), 'SM': (0x91, 10, True),
 }
 
 

@@ -78,10 +78,15 @@ EndCode remote_reset(CommandContext& ctx) {
     return code;
 }
 
-// Clear Error 1617 — §8: initialises the error code (SD0, SM0/SM1). A stop
-// error is what stopped the CPU and needs a Remote RESET: C05F (chosen).
+// Clear Error 1617 — §8: initialises the error code of the device the client
+// is connected to. A CPU's built-in port refuses it (kConnectedDevice). On the
+// iQ-F port the device is the CPU: SD0 and SM0/SM1 are cleared, and a stop
+// error, which needs a Remote RESET, answers C05F (chosen). Through a module
+// port it is the module's error and COM.ERR LED, which slmp-sim does not
+// model: the CPU's error stays (docs/cpu-runtime.md).
 EndCode clear_error(CommandContext& ctx) {
     if (!ctx.in.finish()) return ctx.in.error();
+    if (ctx.station_port.relays) return EndCode::Ok;
     return end_code_for(ctx.cpu.runtime().clear_error(ctx.cpu.memory()));
 }
 

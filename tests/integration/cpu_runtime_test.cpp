@@ -82,6 +82,32 @@ TEST_CASE("SD203 with the switch at STOP (--switch STOP)", "[cpu][runtime]") {
     CHECK(ask(tcp, read_words(kBin, "SD203", 1)) == show(ok_words(kBin, {0x0002})));
 }
 
+// Clear Error 1617 is refused by an iQ-R CPU's built-in port, as the Chinese
+// manual's access table says; SM50 (error reset) clears the continuation error
+// at the next END, and the CPU turns SM50 off (docs/cpu-runtime.md).
+TEST_CASE("a continuation error: 1617 refused by the built-in port, SM50 clears it at END", "[cpu][runtime][error_clear]") {
+    SimOptions options;
+    options.config_json = R"({"cpu": {"error": {"code": "1900", "stop": false}}})";
+    SimProcess sim(options);
+    TcpLink tcp(sim.tcp_port());
+    UdpLink udp(sim.udp_port());
+    const auto clear_error = [](const Wire& w) { return client::build_request(w.options(), 0x1617, 0x0000, [](auto&) {}); };
+    for (const auto& w : {kBin, kAsc}) {
+        INFO(w.name());
+        CHECK(ask(tcp, clear_error(w)) == show(refused(w, 0xC059, 0x1617)));
+        CHECK(show(udp.exchange(clear_error(w))) == show(refused(w, 0xC059, 0x1617)));
+        CHECK(ask(tcp, read_words(w, "SD0", 1)) == show(ok_words(w, {0x1900})));
+    }
+    REQUIRE(ask(tcp, client::write_bits(kBin.options(), addr("SM50"), std::vector<std::uint8_t>{1})) == show(ok(kBin)));
+    // The next END resets the error: wait for it (the CPU scans on its own clock).
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (ask(tcp, read_words(kBin, "SD0", 1)) != show(ok_words(kBin, {0x0000})) && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    CHECK(ask(tcp, read_words(kAsc, "SD0", 1)) == show(ok_words(kAsc, {0x0000})));
+    CHECK(ask(tcp, client::read_bits(kBin.options(), addr("SM0"), 2)) == show(expected_response(kBin, Bytes{0x00})));
+    CHECK(ask(tcp, client::read_bits(kBin.options(), addr("SM50"), 1)) == show(expected_response(kBin, Bytes{0x00})));
+}
+
 TEST_CASE("Remote RESET: no answer, every connection closed, latched memory kept", "[cpu][runtime][reset][no-proxy]") {
     SimOptions options;
     options.config_json = R"({"cpu": {"remote_reset": true, "latch": {"D": [100, 199]}}})";

@@ -87,9 +87,11 @@ TEST_CASE("example stop_on_error: a held condition raises stop error 3100, a tim
     CHECK(read_word(c, "SD203").value_or(0) % 16 == 2);      // STOP
     CHECK((read_word(c, "M200").value_or(0) & 1) == 1);      // the cooling-fault flag
     CHECK(read_word(c, "D200").value_or(0) >= 120);
-    // A stop error is not cleared by Clear Error: still STOP with the error.
+    // A stop error is not cleared: 1617 is refused by the built-in port (C059), still STOP with the error.
     REQUIRE(c.send(request_frame(kBinary3E, {0x10, 0x00, 0x17, 0x16, 0x00, 0x00})));   // Clear Error 1617
-    REQUIRE(c.response());
+    auto refused = c.response();
+    REQUIRE(refused);
+    CHECK(refused->end_code == 0xC059);
     CHECK(read_word(c, "SD0") == 0x3100);
     // At 40 s the maintenance trigger cycles the power: the connection drops,
     // then the CPU is back in RUN without the error and with its initial D200.

@@ -284,7 +284,7 @@ void division_by_zero(devicemodel::CpuProfile profile, program::OnOperationError
         CHECK(rig.get("SM1") == 1);
         CHECK(rig.get("SD0") == code);
         CHECK(rig.get("SM56") == (q ? 1u : 0u));
-        // Cleared by the client (1617), raised again by the next scan.
+        // Cleared (SM50 error reset, or 1617 on an iQ-F port), raised again by the next scan.
         rig.set("SM0", 0);
         rig.set("SD0", 0);
         rig.scan();

@@ -168,9 +168,9 @@ TEST_CASE("malformed remote requests change nothing", "[remote][errors]") {
     CHECK(sd203(cpu, wire) == wire.expect(ok(words({0x0000}))));
 }
 
-TEST_CASE("1617 Clear Error", "[remote][error_clear]") {
-    auto wire = GENERATE(kBinary3E, kBinary4E, kAscii3E, kAscii4E);
-    auto cpu = make_cpu();
+TEST_CASE("1617 Clear Error on the iQ-F port clears the CPU's error", "[remote][error_clear]") {
+    auto wire = GENERATE(kBinary3E, kAscii3E);   // the FX5 port serves 3E only
+    auto cpu = make_cpu("FX5U-32MR");
     Client a(1);
     SECTION("a continuation error: SD0 and SM0 cleared") {
         cpu.runtime().raise_error(cpu.memory(), {0x1900, false});
@@ -187,5 +187,71 @@ TEST_CASE("1617 Clear Error", "[remote][error_clear]") {
     }
     SECTION("trailing data: C061") {
         CHECK(a.exchange(cpu, wire, clear_error_req() + word(0)) == wire.expect(error(0xC061, 0x1617, 0x0000)));
+    }
+}
+
+// The Chinese manual's access table marks Clear Error × for the iQ-R, Q and L
+// CPUs' built-in ports; through an Ethernet module it clears the module's
+// own error, and the CPU's stays.
+TEST_CASE("1617 Clear Error: a CPU's built-in port refuses it, a module port leaves the CPU's error", "[remote][error_clear]") {
+    auto wire = GENERATE(kBinary3E, kAscii3E);   // the Q and L built-in ports serve 3E only
+    SECTION("iQ-R, QnU and L built-in ports: C059, SD0 unchanged") {
+        auto profile = GENERATE(as<std::string>{}, "R08CPU", "Q26UDEHCPU", "L26CPU-BT");
+        auto cpu = make_cpu(profile);
+        Client a(1);
+        cpu.runtime().raise_error(cpu.memory(), {0x1900, false});
+        CHECK(a.exchange(cpu, wire, clear_error_req()) == wire.expect(error(0xC059, 0x1617, 0x0000)));
+        CHECK(a.exchange(cpu, wire, read_words_req(Form::Q, "SD0", 1)) == wire.expect(ok(words({0x1900}))));
+    }
+    SECTION("RJ71EN71 and QJ71E71 module ports: 0000, the CPU's SD0 stays") {
+        auto profile = GENERATE(as<std::string>{}, "RJ71EN71", "Q06UDVCPU-QJ71E71");
+        auto cpu = make_cpu(profile);
+        Client a(1);
+        cpu.runtime().raise_error(cpu.memory(), {0x1900, false});
+        CHECK(a.exchange(cpu, wire, clear_error_req()) == wire.expect(ok()));
+        CHECK(a.exchange(cpu, wire, read_words_req(Form::Q, "SD0", 1)) == wire.expect(ok(words({0x1900}))));
+    }
+}
+
+// SM50 Error reset: the CPU's own way, from the program or a client's write.
+TEST_CASE("SM50 error reset clears a continuation error at END", "[remote][error_clear]") {
+    auto wire = GENERATE(kBinary3E, kAscii3E);
+    const devicemodel::CalendarTime calendar{};
+    auto at = [](int ms) { return devicemodel::Runtime::TimePoint{} + std::chrono::milliseconds(ms); };
+    SECTION("iQ-R: OFF->ON clears SM0/SM1/SD0, and the CPU turns SM50 off") {
+        auto cpu = make_cpu("R08CPU");
+        Client a(1);
+        cpu.runtime().raise_error(cpu.memory(), {0x1900, false});
+        CHECK(a.exchange(cpu, wire, write_bits_req(Form::Q, "SM50", {1})) == wire.expect(ok()));
+        cpu.runtime().scan(cpu.memory(), at(10), calendar);
+        CHECK(a.exchange(cpu, wire, read_words_req(Form::Q, "SD0", 1)) == wire.expect(ok(words({0x0000}))));
+        CHECK(a.exchange(cpu, wire, read_bits_req(Form::Q, "SM0", 2)) == wire.expect(ok(bits({0, 0}))));
+        CHECK(a.exchange(cpu, wire, read_bits_req(Form::Q, "SM50", 1)) == wire.expect(ok(bits({0}))));
+    }
+    SECTION("QnU: SM50 stays ON; a later error needs SM50 OFF then ON again") {
+        auto cpu = make_cpu("Q26UDEHCPU");
+        Client a(1);
+        cpu.runtime().raise_error(cpu.memory(), {0x1900, false});
+        CHECK(a.exchange(cpu, wire, write_bits_req(Form::Q, "SM50", {1})) == wire.expect(ok()));
+        cpu.runtime().scan(cpu.memory(), at(10), calendar);
+        CHECK(a.exchange(cpu, wire, read_words_req(Form::Q, "SD0", 1)) == wire.expect(ok(words({0x0000}))));
+        CHECK(a.exchange(cpu, wire, read_bits_req(Form::Q, "SM50", 1)) == wire.expect(ok(bits({1}))));
+        cpu.runtime().raise_error(cpu.memory(), {0x1900, false});
+        cpu.runtime().scan(cpu.memory(), at(20), calendar);
+        CHECK(a.exchange(cpu, wire, read_words_req(Form::Q, "SD0", 1)) == wire.expect(ok(words({0x1900}))));
+        CHECK(a.exchange(cpu, wire, write_bits_req(Form::Q, "SM50", {0})) == wire.expect(ok()));
+        cpu.runtime().scan(cpu.memory(), at(30), calendar);
+        CHECK(a.exchange(cpu, wire, write_bits_req(Form::Q, "SM50", {1})) == wire.expect(ok()));
+        cpu.runtime().scan(cpu.memory(), at(40), calendar);
+        CHECK(a.exchange(cpu, wire, read_words_req(Form::Q, "SD0", 1)) == wire.expect(ok(words({0x0000}))));
+    }
+    SECTION("a stop error stays: it needs a reset") {
+        auto cpu = make_cpu("R08CPU");
+        Client a(1);
+        cpu.runtime().raise_error(cpu.memory(), {0x3300, true});
+        CHECK(a.exchange(cpu, wire, write_bits_req(Form::Q, "SM50", {1})) == wire.expect(ok()));
+        cpu.runtime().scan(cpu.memory(), at(10), calendar);
+        CHECK(a.exchange(cpu, wire, read_words_req(Form::Q, "SD0", 1)) == wire.expect(ok(words({0x3300}))));
+        CHECK(sd203(cpu, wire) == wire.expect(ok(words({0x0042}))));
     }
 }
