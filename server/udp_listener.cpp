@@ -62,7 +62,7 @@ station::StrandTask<> UdpListener::serve() {
                            station::log_exception("UDP port " + std::to_string(port_) + ": a datagram served later failed"));
             continue;
         }
-        if (auto later = answer_now(input, sender, peer, std::move(taken.now))) co_await send_later(sender, std::move(*later));
+        if (auto later = answer_now(input, sender, peer, taken.now)) co_await send_later(sender, std::move(*later));
     }
 }
 
@@ -70,7 +70,7 @@ station::StrandTask<> UdpListener::answer_later(station::StrandTask<std::optiona
                                                 std::vector<std::uint8_t> datagram, udp::endpoint sender) {
     auto handled = co_await std::move(later);
     if (!handled || !socket_.is_open()) co_return;
-    if (auto rest = answer_now(datagram, sender, peer_of(sender), std::move(*handled))) co_await send_later(sender, std::move(*rest));
+    if (auto rest = answer_now(datagram, sender, peer_of(sender), *handled)) co_await send_later(sender, std::move(*rest));
 }
 
 protocol::Peer UdpListener::peer_of(const udp::endpoint& sender) const {
@@ -80,7 +80,7 @@ protocol::Peer UdpListener::peer_of(const udp::endpoint& sender) const {
 }
 
 std::optional<station::Handled> UdpListener::answer_now(std::span<const std::uint8_t> input, const udp::endpoint& sender,
-                                                        const protocol::Peer& peer, station::Handled handled) {
+                                                        const protocol::Peer& peer, station::Handled& handled) {
     const auto n = input.size();
     auto& outcome = handled.outcome;
     if (outcome.action == Outcome::Action::NeedMore) {
@@ -97,10 +97,10 @@ std::optional<station::Handled> UdpListener::answer_now(std::span<const std::uin
     }
     if (outcome.action == Outcome::Action::Restart) station_.restart();
     if (outcome.action != Outcome::Action::Respond) return std::nullopt;
-    if (!handled.delivery.plain()) return handled;
+    if (!handled.delivery.plain()) return std::move(handled);
     boost::system::error_code ec;
     socket_.send_to(asio::buffer(outcome.response), sender, 0, ec);
-    if (ec == asio::error::would_block || ec == asio::error::try_again) return handled;   // the send buffer is full
+    if (ec == asio::error::would_block || ec == asio::error::try_again) return std::move(handled);   // the send buffer is full
     if (ec) station_.log().debug("{} send failed: {}", peer.text(), ec.message());
     return std::nullopt;
 }

@@ -41,10 +41,10 @@ private:
     station::StrandTask<> answer_later(station::StrandTask<std::optional<station::Handled>> later,
                                        std::vector<std::uint8_t> datagram, boost::asio::ip::udp::endpoint sender);
     // The station's answer to one datagram, sent at once when it can be (no
-    // scenario delay or split, room in the send buffer); else returned.
+    // scenario delay or split, room in the send buffer); else moved out and returned.
     std::optional<station::Handled> answer_now(std::span<const std::uint8_t> datagram,
                                                const boost::asio::ip::udp::endpoint& sender, const protocol::Peer& peer,
-                                               station::Handled handled);
+                                               station::Handled& handled);
     // The answer answer_now() returned, sent as its delivery asks.
     station::StrandTask<> send_later(boost::asio::ip::udp::endpoint sender, station::Handled handled);
     protocol::Peer peer_of(const boost::asio::ip::udp::endpoint& sender) const;

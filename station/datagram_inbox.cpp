@@ -21,12 +21,9 @@ TimedDatagramInbox::TimedDatagramInbox(Station& station, const config::PortConfi
       session_(station.new_session(port)) {}
 
 DatagramTaken TimedDatagramInbox::hand_over(std::span<const std::uint8_t> datagram, const protocol::Peer& peer) {
-    DatagramTaken taken;
-    if (!at_once_) {   // each datagram waits on the clock by itself, from its arrival
-        taken.later.emplace(held(HeldDatagram(station_, datagram, policy_, session_), peer));
-        return taken;
-    }
-    taken.now = station_.handle(datagram, policy_, session_, peer);
+    if (!at_once_)   // each datagram waits on the clock by itself, from its arrival
+        return {{}, held(HeldDatagram(station_, datagram, policy_, session_), peer)};
+    DatagramTaken taken{station_.handle(datagram, policy_, session_, peer), std::nullopt};   // the answer built in place
     if (taken.now.relay || taken.now.forward)   // the port receives on while another station or the upstream serves it
         taken.later.emplace(relayed(std::move(taken.now), std::vector<std::uint8_t>(datagram.begin(), datagram.end()), peer));
     return taken;
