@@ -123,7 +123,9 @@ public:
     PlantReader(const nlohmann::json& root, std::string source, std::filesystem::path directory)
         : source_(std::move(source)), directory_(std::move(directory)) {
         defaults_ = root;
-        for (const char* key : {"stations", "threads", "name", "shards", "shard_host", "metrics_by"}) defaults_.erase(key);
+        // The plant's own keys (its rows) are no station's default; nor is a name.
+        for (auto key : section_keys(Section::Plant)) defaults_.erase(std::string(key));
+        defaults_.erase("name");
     }
 
     // One station entry (a template's already expanded); `i` is its template index.
