@@ -1,6 +1,7 @@
 // Reading a plant: defaults, stations, templates (docs/plants.md).
 #include "config/plant_config.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <map>
@@ -15,7 +16,6 @@ namespace slmp::config {
 
 namespace {
 
-constexpr std::uint64_t kMaxTemplateCount = 10000;
 // Keys that belong to the whole process, not to one station.
 constexpr const char* kPlantWideKeys[] = {"http", "log_level", "threads", "stations", "shards", "shard_host", "metrics_by"};
 
@@ -123,7 +123,9 @@ public:
     PlantReader(const nlohmann::json& root, std::string source, std::filesystem::path directory)
         : source_(std::move(source)), directory_(std::move(directory)) {
         defaults_ = root;
-        for (const char* key : {"stations", "threads", "name", "shards", "shard_host", "metrics_by"}) defaults_.erase(key);
+        // The plant's own keys (its rows) are no station's default; nor is a name.
+        for (auto key : section_keys(Section::Plant)) defaults_.erase(std::string(key));
+        defaults_.erase("name");
     }
 
     // One station entry (a template's already expanded); `i` is its template index.
@@ -341,13 +343,13 @@ PlantConfig parse_plant_config(const std::string& json_text, const std::string& 
         }
         auto body = entry["template"];
         body.expect_object();
-        auto count = entry["count"].unsigned_int(kMaxTemplateCount);
-        if (count == 0) entry["count"].fail("must be at least 1", "give the number of stations the template makes");
-        long first = entry.has("first") ? static_cast<long>(entry["first"].unsigned_int(1000000)) : 1;
+        auto count = bounded_setting(entry, Section::Template, "count");
+        long first = entry.has("first") ? static_cast<long>(bounded_setting(entry, Section::Template, "first")) : 1;
         // The entry's own keys sit beside the template's (and win): {"template": {...}, "count": 500, "name": "press-{i}"}.
+        const auto template_keys = section_keys(Section::Template);
         auto station = body.json();
         for (const auto& [key, value] : entry.json().items())
-            if (key != "template" && key != "count" && key != "first") station[key] = value;
+            if (std::find(template_keys.begin(), template_keys.end(), key) == template_keys.end()) station[key] = value;
         for (std::uint64_t n = 0; n < count; ++n) {
             long i = first + static_cast<long>(n);
             ++position;

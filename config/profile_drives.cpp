@@ -10,6 +10,8 @@
 
 #include <string>
 
+#include "config/settings.hpp"
+
 namespace slmp::config {
 
 using devicemodel::DriveKind;
@@ -20,13 +22,14 @@ namespace {
 
 constexpr std::uint16_t kMaxDriveNumber = 0xFF;
 
-DriveKind kind(const JsonAt& at) {
-    auto text = at.string();
+// The drive's "kind": one of its row's choices, which are devicemodel::drive_kind_key's names.
+DriveKind kind(const JsonAt& at, Section section) {
+    auto text = choice_setting(at, section, "kind");
     for (auto k : {DriveKind::ProgramMemory, DriveKind::SramCard, DriveKind::SdCard, DriveKind::StandardRam,
                    DriveKind::StandardRom, DriveKind::DeviceLabelMemory, DriveKind::DataMemory})
         if (text == devicemodel::drive_kind_key(k)) return k;
-    at.fail("unknown drive kind '" + text + "'",
-            "use program_memory, sram_card, sd_card, standard_ram, standard_rom, device_label_memory or data_memory");
+    at["kind"].fail("drive kind '" + text + "' has no devicemodel::DriveKind", "report this: the settings table and "
+                    "devicemodel/drive_spec.cpp disagree");
 }
 
 std::uint16_t number(const std::string& key, const JsonAt& at) {
@@ -36,19 +39,20 @@ std::uint16_t number(const std::string& key, const JsonAt& at) {
     return static_cast<std::uint16_t>(std::stoul(key));
 }
 
+// A drive's keys are the settings table's FileDrive rows, an alias's its DriveAlias rows.
 DriveSpec drive(std::uint16_t n, const JsonAt& at) {
     at.expect_object();
     DriveSpec spec;
     spec.number = n;
     if (at.has("alias_of")) {   // iQ-R drive 1: another name for drive 3, nothing of its own
-        at.only_keys({"alias_of", "kind"});
-        spec.alias_of = static_cast<std::uint16_t>(at["alias_of"].unsigned_int(kMaxDriveNumber));
-        if (at.has("kind")) spec.kind = kind(at["kind"]);
+        check_keys(at, Section::DriveAlias);
+        spec.alias_of = static_cast<std::uint16_t>(bounded_setting(at, Section::DriveAlias, "alias_of"));
+        if (at.has("kind")) spec.kind = kind(at, Section::DriveAlias);
         return spec;
     }
-    at.only_keys({"kind", "capacity", "present", "write_protect"});
-    spec.kind = kind(at["kind"]);
-    spec.capacity = at["capacity"].unsigned_int(std::uint64_t{1} << 40);
+    check_keys(at, Section::FileDrive);
+    spec.kind = kind(at, Section::FileDrive);
+    spec.capacity = bounded_setting(at, Section::FileDrive, "capacity");
     if (at.has("present")) spec.present = at["present"].boolean();
     if (at.has("write_protect")) spec.write_protect = at["write_protect"].boolean();
     return spec;

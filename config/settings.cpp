@@ -69,6 +69,18 @@ constexpr Setting kSettings[] = {
     {.section = S::Plant, .key = "stations", .flag = "", .type = T::Array, .default_text = "none",
      .help = "the stations of a plant, each an object of the keys below or a template ([plants.md](plants.md))",
      .doc_table = "station"},
+    // A template entry of "stations" (plant_config.cpp): its keys sit beside the station keys it may also hold.
+    {.section = S::Template, .key = "template", .flag = "", .type = T::Object, .default_text = "none",
+     .help = "the keys of every station it makes ({i} placeholders)",
+     .doc = "a template entry: the station keys of every station it makes, with `{i}` placeholders in strings and "
+            "`\"20000+i\"` port expressions ([plants.md](plants.md))",
+     .doc_table = "station"},
+    {.section = S::Template, .key = "count", .flag = "", .type = T::Integer, .min = 1, .max = 10000,
+     .default_text = "required", .help = "how many stations the template makes",
+     .fix = "give the number of stations the template makes", .doc_type = "number",
+     .doc_table = "station", .below_min = "must be at least 1", .plain_range = true},
+    {.section = S::Template, .key = "first", .flag = "", .type = T::Integer, .max = 1000000, .default_text = "1",
+     .help = "the template's first `i`", .doc_type = "number", .doc_table = "station", .plain_range = true},
 
     // --- one station -----------------------------------------------------------------------------------------------
     {.section = S::Station, .key = "profile", .flag = "profile,p", .type = T::String, .flag_arg = F::Text,
@@ -176,7 +188,7 @@ constexpr Setting kSettings[] = {
     // --- "redundant" and "multidrop": a plant station's place in a pair or on a multidrop line (hardware_config.cpp) ----
     {.section = S::Redundant, .key = "pair", .flag = "", .type = T::String, .default_text = "required",
      .help = "the name of the pair's other CPU, a station of the same plant", .required = true},
-    {.section = S::Redundant, .key = "system", .flag = "", .type = T::Choice, .choices = "A|B", .default_text = "A",
+    {.section = S::Redundant, .key = "system", .flag = "", .type = T::Choice, .choices = "A|B", .default_text = "\"A\"",
      .help = "system A (control at power-on) or B; the other CPU is the other system", .fix = "use \"A\" or \"B\"",
      .noun = "system"},
     {.section = S::Redundant, .key = "switchover_ms", .flag = "", .type = T::Number, .max = 60000,
@@ -593,7 +605,29 @@ constexpr Setting kSettings[] = {
      .default_text = "required", .help = "which of the two the profile does", .required = true},
     {.section = S::Profile, .key = "xy_radix", .flag = "", .type = T::Integer, .max = 16, .default_text = "16", .help = "`8` numbers X and Y (and DX/DY) in octal, as an iQ-F CPU does ([X/Y numbering](#xy-numbering-fx5-octal))", .plain_range = true},
     {.section = S::Profile, .key = "timing", .flag = "", .type = T::Object, .default_text = "see timing.md", .help = "`{\"ke_ms\": 3.9, \"ke_ascii_ms\": 3.9, \"kdt_ms\": 0.003, \"kdt_ascii_ms\": 0.0045, \"scan_wait\": true}`: the response-time model's constants for this CPU (sources in [timing.md](timing.md))", .holds = S::ProfileTiming},
-    {.section = S::Profile, .key = "file_drives", .flag = "", .type = T::Object, .default_text = "none", .help = "the CPU's file drives, keyed by number: `{\"2\": {\"kind\": \"sd_card\", \"capacity\": 8388608, \"present\": true, \"write_protect\": false}, \"1\": {\"kind\": \"device_label_memory\", \"alias_of\": 3}}`. `kind` is `program_memory`, `sram_card`, `sd_card`, `standard_ram`, `standard_rom`, `device_label_memory` or `data_memory`; `capacity` in bytes; `present` (default `true`) and `write_protect` (default `false`) are the defaults the configuration's `drives` may change. A profile that `extends` another changes one drive key by key and removes one with `null`. Without drives the port refuses the file commands (C059) ([files.md](files.md#drives-per-family))"},
+    {.section = S::Profile, .key = "file_drives", .flag = "", .type = T::Object, .default_text = "none", .help = "the CPU's file drives, keyed by number (the keys below): `{\"2\": {\"kind\": \"sd_card\", \"capacity\": 8388608, \"present\": true, \"write_protect\": false}, \"1\": {\"kind\": \"device_label_memory\", \"alias_of\": 3}}`; `present` and `write_protect` are the defaults the configuration's `drives` may change. A profile that `extends` another changes one drive key by key and removes one with `null`. Without drives the port refuses the file commands (C059) ([files.md](files.md#drives-per-family))", .holds = S::FileDrive},
+    // "file_drives": {"2": {...}} (profile_drives.cpp); an alias has only its own two keys.
+    {.section = S::FileDrive, .key = "kind", .flag = "", .type = T::Choice,
+     .choices = "program_memory|sram_card|sd_card|standard_ram|standard_rom|device_label_memory|data_memory",
+     .default_text = "required", .help = "what the drive is",
+     .fix = "use program_memory, sram_card, sd_card, standard_ram, standard_rom, device_label_memory or data_memory",
+     .required = true, .noun = "drive kind"},
+    {.section = S::FileDrive, .key = "capacity", .flag = "", .type = T::Integer, .max = 1099511627776.0,
+     .default_text = "required", .help = "bytes of file data the drive holds", .doc_type = "number", .required = true,
+     .plain_range = true},
+    {.section = S::FileDrive, .key = "present", .flag = "", .type = T::Boolean, .default_text = "`true`",
+     .help = "a card is in the slot (the configuration's `drives` may change it)"},
+    {.section = S::FileDrive, .key = "write_protect", .flag = "", .type = T::Boolean, .default_text = "`false`",
+     .help = "the SD card's LOCK switch (the configuration's `drives` may change it)"},
+    {.section = S::DriveAlias, .key = "alias_of", .flag = "", .type = T::Integer, .max = 255, .default_text = "—",
+     .help = "the drive this one is another name for (iQ-R drive 1 is drive 3); an alias has only `alias_of` and "
+             "`kind` (listed as `\"sd_card\"` when left out), nothing of its own",
+     .doc_type = "number", .doc_table = "profile", .required = true, .plain_range = true},
+    {.section = S::DriveAlias, .key = "kind", .flag = "", .type = T::Choice,
+     .choices = "program_memory|sram_card|sd_card|standard_ram|standard_rom|device_label_memory|data_memory",
+     .default_text = "`\"sd_card\"`", .help = "the kind it is listed as",
+     .fix = "use program_memory, sram_card, sd_card, standard_ram, standard_rom, device_label_memory or data_memory",
+     .noun = "drive kind"},
     {.section = S::Profile, .key = "file_end_codes", .flag = "", .type = T::Object, .default_text = "with `file_drives`", .help = "the end code of each refused file operation — `no_drive`, `bad_name`, `not_found`, `exists`, `not_a_file`, `no_capacity`, `write_protected`, `read_only`, `locked`, `password`, `bad_pointer`, `not_write_mode`, `out_of_range`, `too_many_open`, `host_error`, `run_state` ([end-codes.md](end-codes.md#file-commands-1810182a))"},
     {.section = S::Profile, .key = "remote_password_length", .flag = "", .type = T::Array, .help = "`[min, max]` characters of the remote password: `[4, 4]` Q/L, `[6, 32]` iQ-R and iQ-F; without it 1630/1631 answer `not_supported` and `cpu.password` is refused"},
 };
@@ -613,6 +647,7 @@ constexpr SectionInfo kSections[] = {
     {S::None, "", ""},
     {S::CommandLine, "(command line)", ""},
     {S::Plant, "(plant)", ""},
+    {S::Template, "stations[]", "station"},
     {S::Station, "", "station"},
     {S::Port, "ports[]", "port"},
     {S::Module, "modules[]", "hardware"},
@@ -643,6 +678,8 @@ constexpr SectionInfo kSections[] = {
     {S::FormLimit, "limits.*", "profile"},
     {S::ProfileTiming, "timing", "profile"},
     {S::Difference, "manual_vs_hardware.TOPIC", "profile", true},
+    {S::FileDrive, "file_drives.N", "profile", true},
+    {S::DriveAlias, "file_drives.N", "", true},   // alias_of is listed in the profile table; kind is FileDrive's
     {S::SizeRegister, "size_registers[]", "profile"},
 };
 
@@ -924,9 +961,7 @@ nlohmann::json settings_json_schema() {
     auto stations = schema_of(setting(S::Plant, "stations"));
     // A station entry: its own keys, or a template of them ("template", "count", "first").
     auto entry = station;
-    entry["properties"]["template"] = {{"type", "object"}, {"description", "the keys of every station it makes ({i} placeholders)"}};
-    entry["properties"]["count"] = {{"type", "integer"}, {"minimum", 1}, {"maximum", 10000}};
-    entry["properties"]["first"] = {{"type", "integer"}, {"minimum", 0}, {"maximum", 1000000}};
+    for (auto key : section_keys(S::Template)) entry["properties"][std::string(key)] = schema_of(setting(S::Template, key));
     stations["items"] = entry;
     plant["properties"]["stations"] = stations;
     plant["$schema"] = "https://json-schema.org/draft/2020-12/schema";

@@ -31,6 +31,7 @@ enum class Section : std::uint8_t {
     None,          // no section: a row that holds no object
     CommandLine,   // a flag with no key in the file (--help, --config, --ready-file, ...)
     Plant,         // the top of a file that may list "stations"
+    Template,      // a template entry of "stations": "template", "count", "first" (beside the station's keys)
     Station,       // one station's top-level keys (and a plant's defaults)
     Port,          // an entry of "ports"
     Module,        // an entry of "modules"
@@ -61,6 +62,8 @@ enum class Section : std::uint8_t {
     FormLimit,     // a limit of "limits" per request form: {"q", "iqr", "end_code"}
     ProfileTiming, // a profile's "timing": the Timing rows that say `also`
     Difference,    // a value of a profile's "manual_vs_hardware" (keyed by topic)
+    FileDrive,     // a value of a profile's "file_drives" (keyed by drive number)
+    DriveAlias,    // such a value that is another drive's second name: {"alias_of": 3}
     SizeRegister,  // an entry of a profile's "size_registers"
 };
 

@@ -2,9 +2,9 @@
 
 #include <spdlog/spdlog.h>
 
-#include "server/tcp_session.hpp"
+#include "server/tcp_session.hpp"   // to_policy
 #include "server/udp_delivery.hpp"
-#include "station/face_inbox.hpp"
+#include "station/datagram_inbox.hpp"
 #include "station/log_exception.hpp"
 
 namespace slmp::server {
@@ -21,23 +21,20 @@ constexpr int kDatagramsPerTurn = 16;
 UdpListener::UdpListener(const station::Home& home, station::Station& station, frontends::Unit& unit,
                          const config::PortConfig& port, const asio::ip::address& bind)
     : station_(station),
-      unit_(unit),
-      policy_(to_policy(port.data_code)),
-      config_(port),
-      session_(station.new_session(port)),
+      inbox_(station::datagram_inbox(station, unit, port, to_policy(port.data_code))),
       socket_(home, udp::endpoint(bind, port.port)) {
     port_ = socket_.local_endpoint().port();
     socket_.non_blocking(true);   // a waiting datagram is read, and an answer sent, without an asynchronous operation
-    const auto log_name = unit_.face().log_name();
+    const auto log_name = unit.face().log_name();
     const auto name = (log_name.empty() ? std::string() : std::string(log_name) + " ") + "UDP port ";
     asio::co_spawn(home, serve(), station::log_exception(name + std::to_string(port_) + ": receive loop failed"));
 }
 
+// Read a datagram, hand it to the station's inbox, write its answer: at once,
+// or when the inbox has it (held on the clock, routed) while the port reads on.
 station::StrandTask<> UdpListener::serve() {
     std::array<std::uint8_t, 65536> datagram;
     udp::endpoint sender;
-    const bool timed = unit_.timed();
-    const bool at_once = !timed || station_.serves_at_once();
     int turn = 0;   // datagrams served since the last asynchronous receive
     while (socket_.is_open()) {
         boost::system::error_code ec;
@@ -57,44 +54,23 @@ station::StrandTask<> UdpListener::serve() {
             continue;
         }
         auto input = std::span<const std::uint8_t>(datagram.data(), n);
-        if (!timed) {
-            if (auto later = face_answer(input, peer_of(sender))) co_await send_later(sender, std::move(*later));
+        const auto peer = peer_of(sender);
+        auto taken = inbox_->hand_over(input, peer);
+        if (taken.later) {
+            asio::co_spawn(socket_.get_executor(),
+                           answer_later(std::move(*taken.later), std::vector<std::uint8_t>(input.begin(), input.end()), sender),
+                           station::log_exception("UDP port " + std::to_string(port_) + ": a datagram served later failed"));
             continue;
         }
-        if (at_once) {
-            const auto peer = peer_of(sender);
-            auto handled = station_.handle(input, policy_, session_, peer);
-            if (handled.relay || handled.forward) {   // the port receives on while another station or the upstream serves it
-                asio::co_spawn(socket_.get_executor(),
-                               relay_later(std::move(handled), std::vector<std::uint8_t>(input.begin(), input.end()), sender),
-                               station::log_exception("UDP port " + std::to_string(port_) + ": a routed datagram failed"));
-                continue;
-            }
-            if (auto later = answer_now(input, sender, peer, std::move(handled))) co_await send_later(sender, std::move(*later));
-            continue;
-        }
-        // Each datagram waits on the clock by itself, from its arrival.
-        asio::co_spawn(socket_.get_executor(), serve_later(station::HeldDatagram(station_, input, policy_, session_), sender),
-                       station::log_exception("UDP port " + std::to_string(port_) + ": a held datagram failed"));
+        if (auto later = answer_now(input, sender, peer, taken.now)) co_await send_later(sender, std::move(*later));
     }
 }
 
-station::StrandTask<> UdpListener::serve_later(station::HeldDatagram datagram, udp::endpoint sender) {
-    if (!co_await datagram.wait() || !socket_.is_open()) co_return;
-    const auto peer = peer_of(sender);
-    auto handled = datagram.serve(session_, peer);
-    if (handled.relay || handled.forward) {
-        co_await relay_later(std::move(handled), std::vector<std::uint8_t>(datagram.bytes().begin(), datagram.bytes().end()), sender);
-        co_return;
-    }
-    if (auto later = answer_now(datagram.bytes(), sender, peer, std::move(handled))) co_await send_later(sender, std::move(*later));
-}
-
-station::StrandTask<> UdpListener::relay_later(station::Handled pending, std::vector<std::uint8_t> datagram, udp::endpoint sender) {
-    const auto peer = peer_of(sender);
-    auto handled = co_await station_.pass_on(std::move(pending), datagram, policy_, relays_, session_, peer);
-    if (!socket_.is_open()) co_return;
-    if (auto later = answer_now(datagram, sender, peer, std::move(handled))) co_await send_later(sender, std::move(*later));
+station::StrandTask<> UdpListener::answer_later(station::StrandTask<std::optional<station::Handled>> later,
+                                                std::vector<std::uint8_t> datagram, udp::endpoint sender) {
+    auto handled = co_await std::move(later);
+    if (!handled || !socket_.is_open()) co_return;
+    if (auto rest = answer_now(datagram, sender, peer_of(sender), *handled)) co_await send_later(sender, std::move(*rest));
 }
 
 protocol::Peer UdpListener::peer_of(const udp::endpoint& sender) const {
@@ -104,7 +80,7 @@ protocol::Peer UdpListener::peer_of(const udp::endpoint& sender) const {
 }
 
 std::optional<station::Handled> UdpListener::answer_now(std::span<const std::uint8_t> input, const udp::endpoint& sender,
-                                                        const protocol::Peer& peer, station::Handled handled) {
+                                                        const protocol::Peer& peer, station::Handled& handled) {
     const auto n = input.size();
     auto& outcome = handled.outcome;
     if (outcome.action == Outcome::Action::NeedMore) {
@@ -121,26 +97,12 @@ std::optional<station::Handled> UdpListener::answer_now(std::span<const std::uin
     }
     if (outcome.action == Outcome::Action::Restart) station_.restart();
     if (outcome.action != Outcome::Action::Respond) return std::nullopt;
-    if (!handled.delivery.plain()) return handled;
+    if (!handled.delivery.plain()) return std::move(handled);
     boost::system::error_code ec;
     socket_.send_to(asio::buffer(outcome.response), sender, 0, ec);
-    if (ec == asio::error::would_block || ec == asio::error::try_again) return handled;   // the send buffer is full
+    if (ec == asio::error::would_block || ec == asio::error::try_again) return std::move(handled);   // the send buffer is full
     if (ec) station_.log().debug("{} send failed: {}", peer.text(), ec.message());
     return std::nullopt;
-}
-
-std::optional<station::Handled> UdpListener::face_answer(std::span<const std::uint8_t> datagram,
-                                                         const protocol::Peer& peer) {
-    auto [exchange, delivery] = station::call_face(station_, unit_, nullptr, session_.id, peer, datagram, true);
-    if (exchange.response.empty()) {
-        station_.log().debug("{} UDP {}: datagram of {} byte(s) not answered", unit_.face().log_name(), peer.text(),
-                             datagram.size());
-        return std::nullopt;
-    }
-    station::Handled answer;
-    answer.outcome.response.assign(exchange.response.begin(), exchange.response.end());
-    answer.delivery.delay = delivery.delay;   // the port's next datagram waits behind it, as on a busy unit
-    return answer;
 }
 
 station::StrandTask<> UdpListener::send_later(udp::endpoint sender, station::Handled handled) {
@@ -149,15 +111,13 @@ station::StrandTask<> UdpListener::send_later(udp::endpoint sender, station::Han
     if (ec) station_.log().debug("{} send failed: {}", peer_of(sender).text(), ec.message());
 }
 
-void UdpListener::restart_session() {
-    session_ = station_.new_session(config_);
-}
+void UdpListener::restart_session() { inbox_->restart(); }
 
 void UdpListener::push_targets(std::vector<station::PushTarget>& targets) {
     for (const auto& entry : peers_) {
         const auto& to = entry.first;
         const auto peer = peer_of(to);
-        targets.push_back({session_.id, peer, entry.second.kind, entry.second.codec, [this, to](std::vector<std::uint8_t> bytes) {
+        targets.push_back({inbox_->session_id(), peer, entry.second.kind, entry.second.codec, [this, to](std::vector<std::uint8_t> bytes) {
                                auto data = std::make_shared<std::vector<std::uint8_t>>(std::move(bytes));
                                socket_.async_send_to(asio::buffer(*data), to, [data](const boost::system::error_code&, std::size_t) {});
                            }});
@@ -165,6 +125,7 @@ void UdpListener::push_targets(std::vector<station::PushTarget>& targets) {
 }
 
 void UdpListener::stop() {
+    inbox_->close();
     boost::system::error_code ec;
     socket_.close(ec);
 }

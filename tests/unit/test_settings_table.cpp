@@ -21,6 +21,7 @@
 #include "config/config.hpp"
 #include "config/plant_config.hpp"
 #include "config/settings.hpp"
+#include "devicemodel/drive_spec.hpp"
 #include "scenarios/loader.hpp"
 #include "server/options.hpp"
 
@@ -60,7 +61,9 @@ bool in_profile(Section section) {
         case Section::FormLimit:
         case Section::ProfileTiming:
         case Section::Difference:
-        case Section::SizeRegister: return true;
+        case Section::SizeRegister:
+        case Section::FileDrive:
+        case Section::DriveAlias: return true;
         default: return false;
     }
 }
@@ -76,7 +79,8 @@ json sample(const Setting& row) {
         {{Section::Timer, "device"}, "T0"}, {{Section::Timer, "points"}, 1}, {{Section::Timer, "preset"}, 1},
         {{Section::MultiCpu, "profile"}, "R08CPU"}, {{Section::CpuError, "code"}, "1900"},
         {{Section::Network, "send"}, json::array({"W0-W0F"})}, {{Section::Network, "device_sizes"}, {{"W", 8192}}}, {{Section::Drive, "passwords"}, {{"LINE.CSV", "secret1"}}},
-        {{Section::Drive, "dir"}, "/tmp"}};
+        {{Section::Drive, "dir"}, "/tmp"}, {{Section::Template, "count"}, 2},
+        {{Section::Template, "template"}, {{"name", "s{i}"}, {"tcp_port", 0}}}};
     if (auto it = in_object.find({row.section, std::string(row.key)}); it != in_object.end()) return it->second;
     static const std::map<std::string, json> samples = {
         {"profile", "R04CPU"}, {"bind", "127.0.0.1"}, {"name", "press-1"}, {"ports", json::array()},
@@ -111,6 +115,11 @@ json document(Section section, const std::string& key, const json& value) {
             if (key != "stations" && key != "threads") return {{key, value}, {"stations", json::array({{{"name", "a"}}})}};
             return {{key, value}};
         case Section::Station: return {{key, value}};
+        case Section::Template: {   // a template entry of a plant: stations s1, s2, ... on any free port
+            json entry = {{"template", {{"name", "s{i}"}, {"tcp_port", 0}}}, {"count", 1}};
+            entry[key] = value;
+            return {{"stations", json::array({entry})}};
+        }
         case Section::Port: {
             json port = {{"transport", "tcp"}, {"port", 0}};
             if (key == "network" || key == "station") port["network"] = port["station"] = 1;   // given together
@@ -552,4 +561,54 @@ TEST_CASE("scenarios/schema.json lists the keys the scenario loader takes", "[se
         CHECK(loader == in_schema);
         CHECK(object["additionalProperties"] == false);
     }
+}
+
+// A profile's "file_drives" entries are rows too (FileDrive, and DriveAlias for
+// another drive's second name): their unknown-key lists, kinds and ranges.
+TEST_CASE("a profile's file drives take their rows' keys", "[settings]") {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {R"({"2": {"kind": "sd_card", "capacity": 1, "size": 1}})",
+         "/file_drives/2/size: unknown key; use one of: kind, capacity, present, write_protect"},
+        {R"({"1": {"alias_of": 2, "capacity": 1}, "2": {"kind": "sd_card", "capacity": 1}})",
+         "/file_drives/1/capacity: unknown key; use one of: alias_of, kind"},
+        {R"({"2": {"kind": "floppy", "capacity": 1}})",
+         "/file_drives/2/kind: unknown drive kind 'floppy'; use program_memory, sram_card, sd_card, standard_ram, "
+         "standard_rom, device_label_memory or data_memory"},
+        {R"({"2": {"kind": "sd_card", "capacity": 1099511627777}})",
+         "/file_drives/2/capacity: value 1099511627777 is larger than 1099511627776; use a smaller number"},
+        {R"({"1": {"alias_of": 256}})", "/file_drives/1/alias_of: value 256 is larger than 255; use a smaller number"},
+    };
+    for (const auto& [drives, message] : cases) {
+        auto text = R"({"extends": "R08CPU", "name": "X", "description": "x", "file_drives": )" + drives + "}";
+        INFO(text);
+        CHECK_THROWS_WITH(config::parse_profile(text, "p.json"), Catch::Contains("p.json: " + message));
+    }
+    // The kinds are the device model's names, in its order.
+    std::string kinds;
+    for (auto k : {devicemodel::DriveKind::ProgramMemory, devicemodel::DriveKind::SramCard, devicemodel::DriveKind::SdCard,
+                   devicemodel::DriveKind::StandardRam, devicemodel::DriveKind::StandardRom,
+                   devicemodel::DriveKind::DeviceLabelMemory, devicemodel::DriveKind::DataMemory})
+        kinds += (kinds.empty() ? "" : "|") + std::string(devicemodel::drive_kind_key(k));
+    CHECK(config::setting(Section::FileDrive, "kind").choices == kinds);
+    CHECK(config::setting(Section::DriveAlias, "kind").choices == kinds);
+    CHECK(config::section_keys(Section::FileDrive) == std::vector<std::string_view>{"kind", "capacity", "present", "write_protect"});
+    CHECK(config::section_keys(Section::DriveAlias) == std::vector<std::string_view>{"alias_of", "kind"});
+}
+
+// A plant's template entries ("template", "count", "first") are rows: their
+// ranges and messages, and the schema's station entries list them.
+TEST_CASE("a plant's template keys are rows", "[settings]") {
+    CHECK(config::section_keys(Section::Template) == std::vector<std::string_view>{"template", "count", "first"});
+    CHECK_THROWS_WITH(parse(json{{"stations", {{{"template", {{"name", "s{i}"}}}, {"count", 0}}}}}),
+                      Catch::Contains("/stations/0/count: must be at least 1; give the number of stations the template makes"));
+    CHECK_THROWS_WITH(parse(json{{"stations", {{{"template", {{"name", "s{i}"}}}, {"count", 10001}}}}}),
+                      Catch::Contains("/stations/0/count: value 10001 is larger than 10000; use a smaller number"));
+    auto plant = parse(json{{"stations", {{{"template", {{"name", "s{i}"}, {"tcp_port", "20000+i"}}}, {"count", 2}, {"first", 7}}}}});
+    REQUIRE(plant.stations.size() == 2);
+    CHECK(plant.stations[1].server.name == "s8");
+    auto entry = config::settings_json_schema()["properties"]["stations"]["items"]["properties"];
+    CHECK(entry["count"]["minimum"] == 1);
+    CHECK(entry["count"]["maximum"] == 10000);
+    CHECK(entry["first"]["maximum"] == 1000000);
+    CHECK(entry["template"]["type"] == "object");
 }
