@@ -20,8 +20,8 @@
 // The transports serve every face alike (server/listeners.hpp): a face's ports,
 // each with the inbox its unit asks for — the station's timed path for a
 // timed unit (SLMP), else an at-once one that wraps every call in a
-// station::FrontEndCall (faults, recording, activity). A face knows no
-// sockets, no scenarios and no station.
+// station::FrontEndCall (faults, recording, activity). A face knows no sockets,
+// scenarios or station: it asks for a clock or a connection out by StationServices.
 #pragma once
 
 #include <chrono>

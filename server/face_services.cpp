@@ -11,16 +11,14 @@ namespace slmp::server {
 namespace asio = boost::asio;
 using station::use_strand;
 
-namespace {
-
 using Whole = std::function<std::optional<std::size_t>(std::span<const std::uint8_t>)>;
 using Answer = std::function<void(std::optional<std::vector<std::uint8_t>>)>;
 
 // The sockets and what waits on them, shared with the handlers in flight: the
 // Outgoing's destruction closes the sockets and marks it so that a handler
 // that still runs calls nobody.
-struct Link : std::enable_shared_from_this<Link> {
-    Link(const station::Home& home, protocol::Transport transport, asio::ip::address address, std::uint16_t port)
+struct OutgoingSockets : std::enable_shared_from_this<OutgoingSockets> {
+    OutgoingSockets(const station::Home& home, protocol::Transport transport, asio::ip::address address, std::uint16_t port)
         : transport(transport), partner(address, port), tcp(home), udp(home) {}
 
     protocol::Transport transport;
@@ -99,9 +97,11 @@ struct Link : std::enable_shared_from_this<Link> {
     }
 };
 
+namespace {
+
 class OutgoingLink final : public frontends::Outgoing {
 public:
-    explicit OutgoingLink(std::shared_ptr<Link> link) : link_(std::move(link)) {}
+    explicit OutgoingLink(std::shared_ptr<OutgoingSockets> link) : link_(std::move(link)) {}
     ~OutgoingLink() override { link_->close(); }
 
     void open(std::function<void(bool)> done) override {
@@ -115,27 +115,38 @@ public:
     }
 
 private:
-    std::shared_ptr<Link> link_;
+    std::shared_ptr<OutgoingSockets> link_;
 };
 
 }  // namespace
 
 void FaceServices::after(std::chrono::milliseconds timer, std::function<bool()> wanted, std::function<void()> then) {
     auto wait = [](station::Station& station, std::chrono::milliseconds timer, std::function<bool()> wanted,
-                   std::function<void()> then) -> station::StrandTask<> {
-        co_await station.wait_on_clock(timer, wanted);
-        if (wanted()) then();
+                   std::function<void()> then, std::shared_ptr<bool> stopped) -> station::StrandTask<> {
+        co_await station.wait_on_clock(timer, [&] { return !*stopped && wanted(); });
+        if (!*stopped && wanted()) then();
     };
-    asio::co_spawn(home_, wait(station_, timer, std::move(wanted), std::move(then)), station::log_exception("a unit's timer failed"));
+    if (*stopped_) return;
+    asio::co_spawn(home_, wait(station_, timer, std::move(wanted), std::move(then), stopped_),
+                   station::log_exception("a unit's timer failed"));
 }
 
 std::unique_ptr<frontends::Outgoing> FaceServices::connect(protocol::Transport transport, const std::string& address,
                                                            std::uint16_t port) {
     boost::system::error_code ec;
     auto ip = asio::ip::make_address(address, ec);
-    auto link = std::make_shared<Link>(home_, transport, ec ? asio::ip::address(asio::ip::address_v4::loopback()) : ip, port);
-    link->unusable = static_cast<bool>(ec);
+    auto link = std::make_shared<OutgoingSockets>(home_, transport, ec ? asio::ip::address(asio::ip::address_v4::loopback()) : ip, port);
+    link->unusable = static_cast<bool>(ec) || *stopped_;
+    std::erase_if(links_, [](const std::weak_ptr<OutgoingSockets>& l) { return l.expired(); });
+    links_.push_back(link);
     return std::make_unique<OutgoingLink>(std::move(link));
+}
+
+void FaceServices::stop() {
+    *stopped_ = true;
+    for (auto& weak : links_)
+        if (auto link = weak.lock()) link->close();
+    links_.clear();
 }
 
 }  // namespace slmp::server

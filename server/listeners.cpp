@@ -91,6 +91,7 @@ void Listeners::stop() {
     for (auto& f : faces_) {
         for (auto& l : f.tcp) l->stop();
         for (auto& l : f.udp) l->stop();
+        f.services->stop();
     }
     if (serial_) serial_->stop();
 }
