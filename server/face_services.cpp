@@ -29,6 +29,10 @@ struct OutgoingSockets : std::enable_shared_from_this<OutgoingSockets> {
     station::StrandSocket tcp;
     station::StrandDatagramSocket udp;
     std::vector<std::uint8_t> received;
+    // The request waiting for its answer (one at a time).
+    bool waiting = false;
+    Whole whole;
+    Answer answer;
 
     void close() {
         closed = true;
@@ -38,6 +42,10 @@ struct OutgoingSockets : std::enable_shared_from_this<OutgoingSockets> {
         udp.close(ec);
     }
 
+    // Opens, then reads for as long as the connection lasts: one reader, so
+    // a TCP connection the partner closes while idle shows as not connected,
+    // and a UDP answer that comes after its request was given up cannot be
+    // taken for the next request's.
     station::StrandTask<> open(std::function<void(bool)> done) {
         auto self = shared_from_this();
         boost::system::error_code ec;
@@ -58,42 +66,70 @@ struct OutgoingSockets : std::enable_shared_from_this<OutgoingSockets> {
             udp.close(ignored);
         }
         done(!ec);
+        if (!ec && !closed) co_await read();
     }
 
-    station::StrandTask<> exchange(std::vector<std::uint8_t> request, Whole whole, Answer answer) {
-        auto self = shared_from_this();
+    station::StrandTask<> read() {
+        std::vector<std::uint8_t> chunk(65536);
         boost::system::error_code ec;
-        std::optional<std::vector<std::uint8_t>> result;
-        if (transport == protocol::Transport::Tcp) {
-            co_await asio::async_write(tcp, asio::buffer(request), asio::redirect_error(use_strand, ec));
-            std::array<std::uint8_t, 2048> chunk{};
-            while (!ec && !closed) {
-                if (auto length = whole(received); length && *length <= received.size()) {
-                    result.emplace(received.begin(), received.begin() + static_cast<std::ptrdiff_t>(*length));
-                    received.erase(received.begin(), received.begin() + static_cast<std::ptrdiff_t>(*length));
-                    break;
-                }
-                auto n = co_await tcp.async_read_some(asio::buffer(chunk), asio::redirect_error(use_strand, ec));
+        while (!closed) {
+            std::size_t n = 0;
+            if (transport == protocol::Transport::Tcp)
+                n = co_await tcp.async_read_some(asio::buffer(chunk), asio::redirect_error(use_strand, ec));
+            else
+                n = co_await udp.async_receive(asio::buffer(chunk), asio::redirect_error(use_strand, ec));
+            if (closed) co_return;
+            // UDP: an ICMP "port unreachable" for an earlier datagram; the caller's timer decides.
+            if (ec == asio::error::connection_refused && transport == protocol::Transport::Udp) continue;
+            if (ec) break;
+            if (transport == protocol::Transport::Tcp) {
                 received.insert(received.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
-            }
-            if (ec) is_connected = false;
-        } else {
-            co_await udp.async_send(asio::buffer(request), asio::redirect_error(use_strand, ec));
-            std::vector<std::uint8_t> datagram(65536);
-            // An ICMP "port unreachable" from an earlier datagram shows as a refused receive: read on,
-            // the answer (or the caller's timer) decides.
-            for (int tries = 0; tries < 4 && !closed; ++tries) {
-                auto n = co_await udp.async_receive(asio::buffer(datagram), asio::redirect_error(use_strand, ec));
-                if (!ec) {
-                    datagram.resize(n);
-                    result = std::move(datagram);
-                    break;
-                }
-                if (ec != asio::error::connection_refused) break;
-            }
+                deliver();
+            } else if (waiting) {
+                take(std::vector<std::uint8_t>(chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n)));
+            }   // else a datagram nobody asked for: dropped
         }
         if (closed) co_return;
-        answer(std::move(result));
+        is_connected = false;   // the partner closed or reset the connection
+        if (waiting) take(std::nullopt);
+    }
+
+    // A whole TCP answer in `received` goes to the request waiting for it; bytes nobody asked for are dropped.
+    void deliver() {
+        if (!waiting) {
+            received.clear();
+            return;
+        }
+        auto length = whole(received);
+        if (!length || *length > received.size()) return;
+        std::vector<std::uint8_t> result(received.begin(), received.begin() + static_cast<std::ptrdiff_t>(*length));
+        received.erase(received.begin(), received.begin() + static_cast<std::ptrdiff_t>(*length));
+        take(std::move(result));
+    }
+
+    void take(std::optional<std::vector<std::uint8_t>> result) {
+        waiting = false;
+        auto callback = std::move(answer);   // it may ask the next request at once
+        answer = nullptr;
+        callback(std::move(result));
+    }
+
+    station::StrandTask<> exchange(std::vector<std::uint8_t> request, Whole ask_whole, Answer ask_answer) {
+        auto self = shared_from_this();
+        whole = std::move(ask_whole);
+        answer = std::move(ask_answer);
+        waiting = true;
+        received.clear();
+        boost::system::error_code ec;
+        if (transport == protocol::Transport::Tcp)
+            co_await asio::async_write(tcp, asio::buffer(request), asio::redirect_error(use_strand, ec));
+        else
+            co_await udp.async_send(asio::buffer(request), asio::redirect_error(use_strand, ec));
+        if (closed || !waiting) co_return;
+        if (ec && transport == protocol::Transport::Tcp) {   // UDP: the answer does not come; the caller's timer decides
+            is_connected = false;
+            take(std::nullopt);
+        }
     }
 };
 

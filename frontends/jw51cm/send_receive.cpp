@@ -149,7 +149,10 @@ std::function<void()> SendReceive::guarded(std::function<void()> action) {
 }
 
 void SendReceive::end_of_scan() {
-    if (!channel_.on || busy_ || !services_) return;
+    if (!channel_.on || !services_) return;
+    // The partner closed the TCP connection (or it broke) while idle: its status flag bit goes.
+    if (!busy_ && channel_.tcp && outgoing_ && !outgoing_->connected()) close_tcp();
+    if (busy_) return;
     ByteAccess memory(link_.cpu().memory(), link_.map());
     std::vector<std::uint8_t> block;
     for (std::uint32_t i = 0; i < kControlBlockBytes; ++i) block.push_back(memory.byte(channel_.control.file, channel_.control.address + i));

@@ -133,6 +133,20 @@ TEST_CASE("JW-51CM SEND/RECEIVE between two stations of a plant over TCP and UDP
         // A station without a table entry: E0 without sending.
         start(api, "a", 0, 0x00, 017, 4, 0x0800, 0x0840);
         CHECK(end_flags(api, "a") == 0xE0);
+        // b drops the connection (its HTTP API, as a power cut or a reset would): a's bit goes, a SEND is E0, an open opens again.
+        auto connections = http_get(api, "/api/stations/b/connections").json()["connections"];
+        REQUIRE(connections.size() == 1);
+        const auto id = connections[0]["id"].get<std::uint64_t>();
+        REQUIRE(http(api, "DELETE", "/api/stations/b/connections/" + std::to_string(id)).status == 200);
+        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (status_flags(api, "a") != 0x80 && std::chrono::steady_clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        CHECK(status_flags(api, "a") == 0x80);
+        start(api, "a", 0, 0x00, 013, 4, 0x0800, 0x0840);
+        CHECK(end_flags(api, "a") == 0xE0);
+        start(api, "a", 0, 0x00, 013, 0, 0, 0xFFFF);
+        CHECK(end_flags(api, "a") == 0x40);
+        CHECK(status_flags(api, "a") == 0x82);
         start(api, "a", 0, 0x00, 013, 0, 0, 0xFFFE);
         CHECK(end_flags(api, "a") == 0x40);
         CHECK(status_flags(api, "a") == 0x80);

@@ -184,6 +184,19 @@ TEST_CASE("JW-51CM SEND/RECEIVE over TCP: open, the commands sent, the answers t
     line->answer(data);
     CHECK(f.byte(0x0810) == 0x00);
 
+    // The partner closes the idle connection: at the next END the bit goes, and a SEND is E0.
+    line->is_connected = false;
+    f.unit->end_of_scan();
+    CHECK(line->destroyed);
+    CHECK(f.byte(kFlags) == 0x80);
+    f.start(0, 0x00, 4, 0x0800, 0x0840);
+    CHECK(f.flags() == 0xE0);
+    f.start(0, 0x00, 0, 0, 0xFFFF);   // opened again
+    line = f.station.lines.at(1);
+    line->opened(true);
+    CHECK(f.flags() == 0x40);
+    CHECK(f.byte(kFlags) == 0x82);
+
     // Close: the connection goes, the bit too; a SEND then is E0 without a connection.
     f.start(0, 0x00, 0, 0, 0xFFFE);
     CHECK(f.flags() == 0x40);
@@ -191,7 +204,7 @@ TEST_CASE("JW-51CM SEND/RECEIVE over TCP: open, the commands sent, the answers t
     CHECK(f.byte(kFlags) == 0x80);
     f.start(0, 0x00, 4, 0x0800, 0x0840);
     CHECK(f.flags() == 0xE0);
-    CHECK(f.station.lines.size() == 1);
+    CHECK(f.station.lines.size() == 2);
 }
 
 TEST_CASE("JW-51CM SEND/RECEIVE: the timer on the station's clock, errors before sending", "[jw51cm][jw51cm-send-receive]") {
