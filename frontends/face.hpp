@@ -20,10 +20,11 @@
 // The transports serve every face alike (server/listeners.hpp): a face's ports,
 // each with the inbox its unit asks for — the station's timed path for a
 // timed unit (SLMP), else an at-once one that wraps every call in a
-// station::FrontEndCall (faults, recording, activity). A face knows no
-// sockets, no scenarios and no station.
+// station::FrontEndCall (faults, recording, activity). A face knows no sockets,
+// scenarios or station: it asks for a clock or a connection out by StationServices.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -39,6 +40,7 @@
 #include "devicemodel/cpu.hpp"
 #include "devicemodel/device_table.hpp"
 #include "frontends/gate.hpp"
+#include "protocol/peer.hpp"
 
 namespace boost::program_options {
 class options_description;
@@ -85,6 +87,44 @@ struct DeviceName {
 // a station snapshot, its file form and the state directory carry them alike.
 using Parts = std::map<std::string, std::vector<std::uint8_t>>;
 
+// A connection a unit opens out of the station (the JW-51CM's SEND/RECEIVE to
+// a partner station): TCP or UDP to one address and port, one request at a
+// time. Made by StationServices::connect(); every callback comes on the
+// station's strand, and none after the object is destroyed (which closes it).
+class Outgoing {
+public:
+    virtual ~Outgoing() = default;
+    // TCP: connects, then done(true); done(false) when it cannot (refused,
+    // unreachable). UDP: done(true) soon after (nothing to set up).
+    virtual void open(std::function<void(bool connected)> done) = 0;
+    virtual bool connected() const = 0;
+    // Sends `request`; `answer` gets the answer's bytes once `whole` — given
+    // the bytes received so far — names the answer's length, or nullopt when
+    // the connection failed or closed first. UDP: the first datagram from the
+    // partner's address and port is the answer (`whole` is not asked).
+    // A request whose answer never comes is the caller's to give up on (its timer).
+    virtual void exchange(std::vector<std::uint8_t> request,
+                          std::function<std::optional<std::size_t>(std::span<const std::uint8_t>)> whole,
+                          std::function<void(std::optional<std::vector<std::uint8_t>>)> answer) = 0;
+};
+
+// What the station offers a unit that acts on its own and not only when asked
+// (the JW-51CM's SEND/RECEIVE): a wait on the station's clock and
+// connections out. Given by Unit::attach() once the station serves the unit;
+// lives as long as the unit is attached.
+class StationServices {
+public:
+    virtual ~StationServices() = default;
+    // Calls `then` on the station's strand once `timer` has passed on the
+    // station's clock (its speed, a frozen clock's steps: docs/timing.md), not
+    // the host's — unless `wanted`, asked at every END meanwhile and before
+    // `then`, says it no longer is (the wait keeps the station scanning every
+    // scan, so a wait that is over should say so).
+    virtual void after(std::chrono::milliseconds timer, std::function<bool()> wanted, std::function<void()> then) = 0;
+    // A connection out to `address` (IPv4 text) and `port`, not yet open.
+    virtual std::unique_ptr<Outgoing> connect(protocol::Transport transport, const std::string& address, std::uint16_t port) = 0;
+};
+
 // One station's instance of a face, on its CPU's memory. Lives as long as the
 // listeners that serve it; used on the station's strand only.
 class Unit {
@@ -101,13 +141,32 @@ public:
     // through stream()/datagram(), in every timing mode.
     virtual bool timed() const { return false; }
 
-    // A new connection's state (null: the face keeps none).
-    virtual std::unique_ptr<SessionState> new_session() { return nullptr; }
+    // A new connection's state (null: the face keeps none); `peer`: who
+    // connected (a default Peer for a serial line). Made on the station's
+    // strand when the connection opens and destroyed there when it closes, so a
+    // unit that reports its connections (the JW-51CM's status flags) learns both.
+    virtual std::unique_ptr<SessionState> new_session(const protocol::Peer& /*peer*/) { return nullptr; }
     // The front of a stream's buffered bytes: one request cut and answered, or need_more.
     // `gate` (a scenario fault) is asked once the request's command is known.
     virtual Exchange stream(std::span<const std::uint8_t> pending, SessionState* session, const Gate& gate) = 0;
-    // One datagram, whole.
-    virtual Exchange datagram(std::span<const std::uint8_t> datagram, const Gate& gate) { return stream(datagram, nullptr, gate); }
+    // One datagram, whole, from `from`.
+    virtual Exchange datagram(std::span<const std::uint8_t> datagram, const Gate& gate, const protocol::Peer& /*from*/) {
+        return stream(datagram, nullptr, gate);
+    }
+
+    // The CPU came up: the station's start, a Remote RESET, the end of a
+    // scenario's power cut, a restore that drops the connections. What the
+    // unit does at its power-on (the JW-51CM writes its status flags again).
+    // On the station's strand; the TCP connections of before may still be closing.
+    virtual void power_on() {}
+
+    // The station serves the unit: what it may ask of it (a unit that only
+    // answers needs nothing). Before any request, end_of_scan() or power_on().
+    virtual void attach(StationServices& /*services*/) {}
+    // The END of each of the station's scans (the ladder's requests to the
+    // unit are read here: the JW-51CM's SEND/RECEIVE start bit). An idle
+    // station scans when something writes to it (docs/timing.md, "What wakes a station").
+    virtual void end_of_scan() {}
 
     // A name in the face's own address form; nullopt when `text` is not one,
     // with *error set when it is one but wrong.

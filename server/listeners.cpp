@@ -31,6 +31,7 @@ Listeners::Listeners(const station::Home& home, station::Station& station, const
         station::Station::FrontEnds units;
         for (const auto& f : faces_) units.push_back(f.unit.get());
         station.attach_frontends(std::move(units));
+        for (const auto& f : faces_) f.unit->power_on();   // after the state directory gave back their memory
     }
 }
 
@@ -40,7 +41,9 @@ void Listeners::listen_face(const station::Home& home, station::Station& station
     if (auto problem = face.check(station.cpu(), settings); !problem.empty()) throw config::ConfigError(problem);
     auto& served = faces_.emplace_back();
     served.unit = face.make_unit(station.cpu(), settings);
+    served.services = std::make_unique<FaceServices>(home, station);
     auto& unit = *served.unit;
+    unit.attach(*served.services);
     std::vector<config::PortConfig> ports;
     if (settings.tcp) ports.push_back(*settings.tcp);
     if (settings.udp) ports.push_back(*settings.udp);
@@ -88,6 +91,7 @@ void Listeners::stop() {
     for (auto& f : faces_) {
         for (auto& l : f.tcp) l->stop();
         for (auto& l : f.udp) l->stop();
+        f.services->stop();
     }
     if (serial_) serial_->stop();
 }
@@ -98,8 +102,10 @@ void Listeners::refuse_connections(bool refusing) {
 }
 
 void Listeners::restart_sessions() {
-    for (auto& f : faces_)
+    for (auto& f : faces_) {
         for (auto& l : f.udp) l->restart_session();
+        f.unit->power_on();
+    }
 }
 
 std::vector<station::PushTarget> Listeners::push_targets() {

@@ -17,6 +17,7 @@
 #include "config/config.hpp"
 #include "config/frontend_config.hpp"
 #include "frontends/face.hpp"
+#include "server/face_services.hpp"
 #include "server/serial_port.hpp"
 #include "server/tcp_listener.hpp"
 #include "server/udp_listener.hpp"
@@ -56,6 +57,7 @@ private:
     // One face: its unit, and its TCP/UDP ports and serial line as its settings say.
     struct Served {
         std::unique_ptr<frontends::Unit> unit;
+        std::unique_ptr<FaceServices> services;   // what the unit may ask of the station (its clock, connections out)
         std::vector<std::unique_ptr<TcpListener>> tcp;
         std::vector<std::unique_ptr<UdpListener>> udp;
     };

@@ -27,7 +27,7 @@ namespace {
 }  // namespace
 
 SerialPort::SerialPort(const station::Home& home, frontends::Unit& unit, std::filesystem::path link_path)
-    : unit_(unit), state_(unit.new_session()), master_(home), link_path_(std::move(link_path)) {
+    : unit_(unit), state_(unit.new_session(protocol::Peer{})), master_(home), link_path_(std::move(link_path)) {
     int master = ::posix_openpt(O_RDWR | O_NOCTTY);
     if (master < 0) fail("cannot open a pseudo-terminal");
     if (::grantpt(master) != 0 || ::unlockpt(master) != 0) {

@@ -7,7 +7,7 @@ namespace slmp::station {
 FaceAnswer call_face(Station& station, frontends::Unit& unit, frontends::SessionState* session, std::uint64_t connection,
                      const protocol::Peer& peer, std::span<const std::uint8_t> input, bool datagram) {
     FrontEndCall call(station, unit.face().name(), connection, peer);
-    FaceAnswer answer{datagram ? unit.datagram(input, call.gate()) : unit.stream(input, session, call.gate()), {}};
+    FaceAnswer answer{datagram ? unit.datagram(input, call.gate(), peer) : unit.stream(input, session, call.gate()), {}};
     auto& e = answer.exchange;
     if (e.need_more) return answer;
     answer.delivery = call.finish(input.first(e.consumed), e.command, e.known, e.name, e.code,
@@ -25,7 +25,7 @@ std::unique_ptr<ConnectionInbox> connection_inbox(Station& station, const Home& 
 }
 
 FaceInbox::FaceInbox(Station& station, frontends::Unit& unit, const protocol::Peer& peer)
-    : station_(station), unit_(unit), state_(unit.new_session()), peer_(peer), id_(station.next_session_id()) {}
+    : station_(station), unit_(unit), state_(unit.new_session(peer)), peer_(peer), id_(station.next_session_id()) {}
 
 StrandTask<> FaceInbox::serve() {
     serve_at_once();

@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "config/station_pattern.hpp"
+#include "frontends/face.hpp"
 #include "protocol/command_table.hpp"
 #include "protocol/error_response.hpp"
 #include "protocol/lock_owner.hpp"
@@ -113,6 +114,10 @@ void Station::start_cpu_runtime(const station::Home& home) {
     program_ = std::make_unique<CpuProgram>(cpu_, config_.cpu.program, *log_);
     scan_->run_program(program_.get());
     scan_->needs_every_scan([this] { return scenario_.running(); });
+    // The protocol faces' units read the ladder's requests to them at END (frontends/face.hpp).
+    scan_->after_scan([this](std::chrono::steady_clock::time_point) {
+        for (auto* unit : frontends_) unit->end_of_scan();
+    });
     if (!config_.persistence.state_dir.empty()) {
         persistence_ = std::make_unique<Persistence>(home, cpu_, config_.persistence, *log_);
         persistence_->before_save = [this] { catch_up(); };
@@ -420,10 +425,11 @@ StrandTask<std::optional<Handled>> Station::pass_through(std::vector<std::uint8_
     co_return refused;
 }
 
-StrandTask<> Station::wait_on_clock(std::chrono::milliseconds timer) {
+StrandTask<> Station::wait_on_clock(std::chrono::milliseconds timer, std::function<bool()> wanted) {
     if (!scan_) co_return;
     const auto until = scan_->clock().now() + timer;
-    while (scan_->clock().now() < until && !scan_->stopped()) co_await scan_->until_end_or(std::nullopt, until);
+    while (scan_->clock().now() < until && !scan_->stopped() && (!wanted || wanted()))
+        co_await scan_->until_end_or(std::nullopt, until);
 }
 
 Handled Station::serve(protocol::Request request, std::span<const std::uint8_t> input, protocol::Session& session,

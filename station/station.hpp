@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <chrono>
+#include <functional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -157,8 +158,9 @@ public:
     // Differential mode (--compare; docs/twin.md, "Compare"): its counts and
     // last differences; null without it.
     Comparison* comparison() { return comparison_.get(); }
-    // Waits `timer` on this station's clock (a relay that got no answer).
-    StrandTask<> wait_on_clock(std::chrono::milliseconds timer);
+    // Waits `timer` on this station's clock (a relay that got no answer);
+    // `wanted`, when given, is asked at every END and ends the wait early once false.
+    StrandTask<> wait_on_clock(std::chrono::milliseconds timer, std::function<bool()> wanted = {});
     // Whether a request is served as soon as it is whole (instant timing):
     // then a transport may serve on its own strand and skip the clock.
     bool serves_at_once() const { return !scan_ || timing_mode_ == config::TimingMode::Instant; }

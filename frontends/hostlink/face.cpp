@@ -61,7 +61,7 @@ public:
 
     const frontends::Face& face() const override { return hostlink::face(); }
 
-    std::unique_ptr<frontends::SessionState> new_session() override { return std::make_unique<Session>(); }
+    std::unique_ptr<frontends::SessionState> new_session(const protocol::Peer&) override { return std::make_unique<Session>(); }
 
     frontends::Exchange stream(std::span<const std::uint8_t> pending, frontends::SessionState* session,
                                const frontends::Gate& gate) override {

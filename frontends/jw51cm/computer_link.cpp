@@ -38,7 +38,14 @@ ComputerLink::ComputerLink(devicemodel::Cpu& cpu, Options options, Clock clock)
       map_(options_.file_bytes, options_.timers),
       clock_(clock ? std::move(clock) : Clock([] { return std::chrono::system_clock::now(); })) {}
 
-ComputerLink::Result ComputerLink::handle_stream(std::span<const std::uint8_t> stream, const frontends::Gate& gate) {
+ComputerLink::Result ComputerLink::handle_stream(std::span<const std::uint8_t> stream, const frontends::Gate& gate,
+                                                 const Caller& caller) {
+    auto result = cut_stream(stream, gate);
+    record_completion(stream, result, caller);
+    return result;
+}
+
+ComputerLink::Result ComputerLink::cut_stream(std::span<const std::uint8_t> stream, const frontends::Gate& gate) {
     Result result;
     if (stream.size() < kMinRequest) return result;
     result.command = stream[kCom];
@@ -62,7 +69,14 @@ ComputerLink::Result ComputerLink::handle_stream(std::span<const std::uint8_t> s
     return answer(stream, *length, gate);
 }
 
-ComputerLink::Result ComputerLink::handle_datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate) {
+ComputerLink::Result ComputerLink::handle_datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate,
+                                                   const Caller& caller) {
+    auto result = cut_datagram(datagram, gate);
+    record_completion(datagram, result, caller);
+    return result;
+}
+
+ComputerLink::Result ComputerLink::cut_datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate) {
     Result result;
     result.kind = Result::Kind::Drop;
     result.consumed = datagram.size();
@@ -116,6 +130,51 @@ ComputerLink::Result ComputerLink::answer(std::span<const std::uint8_t> request,
     }
     result.response = response_frame(frame, rslt, text);
     return result;
+}
+
+void ComputerLink::record_completion(std::span<const std::uint8_t> request, const Result& result, const Caller& caller) {
+    if (result.kind != Result::Kind::Respond || result.response.size() <= kCom + 1) return;
+    auto area = completion_area(options_.parameters);
+    if (!area.on) return;   // checked at start: inside its file, 16-64 bytes
+    auto command = request.first(result.consumed).subspan(kHeaderBytes);
+    write_area(area.place, completion_record(caller, result.response[kCom + 1], command, area.bytes));
+}
+
+void ComputerLink::assign_connections(bool udp_port, std::uint8_t udp, std::uint8_t reserved) {
+    udp_port_ = udp_port;
+    connections_.assign(static_cast<std::uint8_t>(udp | (udp_port ? 1u << kUdpConnection : 0u)), reserved);
+}
+
+std::uint8_t ComputerLink::udp_connection() const { return udp_port_ ? kUdpConnection : kNoConnection; }
+
+void ComputerLink::set_connection(std::uint8_t number, bool established) {
+    connections_.set(number, established);
+    write_flags();
+}
+
+std::uint8_t ComputerLink::open_connection() {
+    auto number = connections_.open();
+    write_flags();
+    return number;
+}
+
+void ComputerLink::close_connection(std::uint8_t number) {
+    connections_.close(number);
+    write_flags();
+}
+
+void ComputerLink::power_on() { write_flags(); }
+
+void ComputerLink::write_flags() {
+    auto area = status_flag_area(options_.parameters);
+    if (!area.on) return;
+    const std::uint8_t flags = connections_.flags();
+    write_area(area.place, std::span<const std::uint8_t>(&flags, 1));
+}
+
+void ComputerLink::write_area(Place place, std::span<const std::uint8_t> bytes) {
+    ByteAccess memory(cpu_.memory(), map_);
+    for (std::size_t i = 0; i < bytes.size(); ++i) memory.set_byte(place.file, place.address + static_cast<std::uint32_t>(i), bytes[i]);
 }
 
 }  // namespace slmp::jw51cm

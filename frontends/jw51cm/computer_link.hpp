@@ -18,12 +18,14 @@
 #include "devicemodel/cpu.hpp"
 #include "frontends/gate.hpp"
 #include "frontends/jw51cm/memory_map.hpp"
+#include "frontends/jw51cm/unit_reports.hpp"
 
 namespace slmp::jw51cm {
 
 inline constexpr std::size_t kHeaderBytes = 40;
 inline constexpr std::uint8_t kCommandId = 0x47, kResponseId = 0x45;
 inline constexpr std::size_t kMaxData = 1024;   // §4.1: bytes per read/write
+inline constexpr std::uint8_t kUdpConnection = 7;   // the UDP port's connection number (inferred, docs/jw51cm.md)
 // The station's operating state knows its STOP holder by client id: this one is the JW-51CM unit.
 inline constexpr devicemodel::ClientId kUnitClient = 0x4A57'3531'434D'0000ULL;
 
@@ -71,9 +73,26 @@ public:
     // in the same segment, §7.2).
     // `gate` (a scenario fault, frontends/gate.hpp) is asked once a whole,
     // well-formed request's COM is known, before the gates of §19.
-    Result handle_stream(std::span<const std::uint8_t> stream, const frontends::Gate& gate = {});
+    // `caller`: who sent it, for the completion record (§11) written after
+    // every request answered when 3667 is 80.
+    Result handle_stream(std::span<const std::uint8_t> stream, const frontends::Gate& gate = {}, const Caller& caller = {});
     // One UDP datagram: one request, its length must be exactly the COM's.
-    Result handle_datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate = {});
+    Result handle_datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate = {},
+                           const Caller& caller = {});
+
+    // The connection numbers (§12): `udp_port` when the unit serves a UDP port
+    // (its number is 7, inferred); `udp` more UDP connections' bits (SEND/RECEIVE's
+    // over UDP), `reserved` bits TCP clients are not given (its TCP_Active one).
+    void assign_connections(bool udp_port, std::uint8_t udp = 0, std::uint8_t reserved = 0);
+    void set_connection(std::uint8_t number, bool established);   // a reserved number's bit
+    std::uint8_t udp_connection() const;   // 7, or kNoConnection without a UDP port
+    // A TCP client connected (its number, kNoConnection when none is free) or
+    // left; the status flag byte follows when 3767 is 80.
+    std::uint8_t open_connection();
+    void close_connection(std::uint8_t number);
+    // Power-on (start, Remote RESET, a power cut's end): the flag byte written again.
+    void power_on();
+    const Connections& connections() const { return connections_; }
 
     std::uint8_t write_mode() const { return write_mode_; }
     const MemoryMap& map() const { return map_; }
@@ -92,12 +111,20 @@ public:
     std::chrono::system_clock::time_point now() const { return clock_(); }
 
 private:
+    Result cut_stream(std::span<const std::uint8_t> stream, const frontends::Gate& gate);
+    Result cut_datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate);
     Result answer(std::span<const std::uint8_t> request, std::size_t length, const frontends::Gate& gate);
+    // §11: the record of an answered request, when the parameters ask for it.
+    void record_completion(std::span<const std::uint8_t> request, const Result& result, const Caller& caller);
+    void write_flags();
+    void write_area(Place place, std::span<const std::uint8_t> bytes);
 
     devicemodel::Cpu& cpu_;
     Options options_;
     MemoryMap map_;
     Clock clock_;
+    Connections connections_;
+    bool udp_port_ = false;
 };
 
 // The response frame for `request`'s header and COM: RSLT, then `text` when RSLT is 00.

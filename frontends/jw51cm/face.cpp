@@ -13,6 +13,8 @@
 #include "frontends/jw51cm/buffers.hpp"
 #include "frontends/jw51cm/command_table.hpp"
 #include "frontends/jw51cm/computer_link.hpp"
+#include "frontends/jw51cm/send_receive.hpp"
+#include "frontends/jw51cm/unit_reports.hpp"
 
 namespace slmp::jw51cm {
 
@@ -57,43 +59,101 @@ std::string hex_text(std::span<const std::uint8_t> bytes) {
     return out;
 }
 
+// The parts of the network parameter image (§15) that act in the simulated
+// unit, so the only ones a configuration may give; the rest (the unit's IP
+// address, its connections, routing, TCP timers) is the simulator's own
+// (tcp_port, udp_port, the bind address).
+struct ParameterBlock {
+    std::uint32_t first, end;   // octal addresses, end exclusive
+    std::string_view what;
+};
+constexpr std::array kParameterBlocks{
+    ParameterBlock{kDesignatedParameters, kRingParameters + 8 * kRingBuffers, "1000-1377 (designated buffers), 1400-1577 (ring buffers)"},
+    ParameterBlock{kConnectionParameters, kConnectionParameters + 4 * kConnections, "0100-0137 (SEND/RECEIVE's connection)"},
+    ParameterBlock{kMappingParameter, kStationTables + 8 * kStationEntries, "0400-0777 (station mapping and tables)"},
+    ParameterBlock{kCompletionParameters, kCompletionParameters + 8, "3660-3667 (command completion information)"},
+    ParameterBlock{kStatusFlagParameters, kStatusFlagParameters + 4, "3764-3767 (connection status flags)"},
+    ParameterBlock{kControlBlockParameters, kControlBlockParameters + 4, "3770-3773 (SEND/RECEIVE control block)"},
+};
+
+std::string parameter_blocks() {
+    std::string text;
+    for (const auto& block : kParameterBlocks) text += (text.empty() ? "" : ", ") + std::string(block.what);
+    return text;
+}
+
 // "parameters": {"1410": "00 08 00 01 0C 00 04 80"} — the network parameter
 // image (§15) by octal address, as the JW-14PG and JW-52SP write it; only the
-// buffer blocks 1000–1577 mean something to the simulated unit, so only they
-// may be given, and they are checked as the unit checks them when they are written.
-void parse_parameters(const JsonAt& at, Options& options) {
+// blocks above may be given, and they are checked as the unit checks them when
+// they are written.
+void parse_parameters(const JsonAt& at, Options& options, bool udp_port) {
     at.expect_object();
     for (const auto& [key, _] : at.json().items()) {
         auto value = at[key];
-        const auto address = octal(key).value_or(0);
-        if (address < kDesignatedParameters || address >= kRingParameters + 8 * kRingBuffers)
-            value.fail("'" + key + "' is not a buffer parameter address",
-                       "write it in octal, 1000-1377 (designated buffers) or 1400-1577 (ring buffers), e.g. \"1410\"");
+        const auto address = octal(key);
+        const auto* block = address ? std::find_if(kParameterBlocks.begin(), kParameterBlocks.end(),
+                                                   [&](const ParameterBlock& b) { return *address >= b.first && *address < b.end; })
+                                    : kParameterBlocks.end();
+        if (block == kParameterBlocks.end())
+            value.fail("'" + key + "' is not a parameter address the simulated unit uses",
+                       "write it in octal, in " + parameter_blocks() + ", e.g. \"1410\"");
         auto bytes = value.json().is_string() ? hex_bytes(value.string()) : std::nullopt;
         if (!bytes || bytes->empty()) value.fail("not hex bytes", "write the bytes from this address on, e.g. \"00 08 00 01 0C 00 04 80\"");
-        if (address + bytes->size() > kRingParameters + 8 * kRingBuffers)
-            value.fail("runs past parameter 1577", "the buffer parameters end at 1577 (octal)");
-        std::copy(bytes->begin(), bytes->end(), options.parameters.begin() + static_cast<std::ptrdiff_t>(address));
+        if (*address + bytes->size() > block->end)
+            value.fail("runs past parameter " + octal(block->end - 1, 4), "the block " + std::string(block->what) + " ends there");
+        std::copy(bytes->begin(), bytes->end(), options.parameters.begin() + static_cast<std::ptrdiff_t>(*address));
     }
     MemoryMap map(options.file_bytes, options.timers);
-    if (auto problem = check_parameters(options.parameters, map); !problem.empty())
-        at.fail(problem, "the unit refuses such parameters when they are written (its ERROR lamp); docs/jw51cm.md");
+    auto problem = check_parameters(options.parameters, map);
+    if (problem.empty()) problem = check_report_parameters(options.parameters, map);
+    if (problem.empty()) problem = check_send_receive_parameters(options.parameters, map, udp_port);
+    if (!problem.empty()) at.fail(problem, "the unit refuses such parameters when they are written (its ERROR lamp); docs/jw51cm.md");
 }
+
+// A TCP client's connection: its number among the unit's 8 (§12) while it
+// lasts, and who it is, for the completion record (§11).
+struct Session final : frontends::SessionState {
+    Session(ComputerLink& link, std::weak_ptr<void> alive, const protocol::Peer& peer)
+        : link(link), alive(std::move(alive)), caller{peer.ipv4, peer.port, link.open_connection()} {}
+    ~Session() override {
+        if (alive.lock()) link.close_connection(caller.connection);   // not once the unit is gone (shutdown)
+    }
+    ComputerLink& link;
+    std::weak_ptr<void> alive;
+    Caller caller;
+};
 
 class Unit final : public frontends::Unit {
 public:
-    Unit(devicemodel::Cpu& cpu, const Options& options) : link_(cpu, options) {}
+    Unit(devicemodel::Cpu& cpu, const Options& options, bool udp) : link_(cpu, options), send_receive_(link_) {
+        // SEND/RECEIVE's connection: a UDP one is on from power-on, a TCP_Active one while it is open.
+        const auto& channel = send_receive_.channel();
+        const auto bit = channel.on ? static_cast<std::uint8_t>(1u << channel.connection) : std::uint8_t{0};
+        link_.assign_connections(udp, channel.tcp ? 0 : bit, channel.tcp ? bit : 0);
+    }
 
     const frontends::Face& face() const override { return jw51cm::face(); }
 
-    frontends::Exchange stream(std::span<const std::uint8_t> pending, frontends::SessionState*,
+    std::unique_ptr<frontends::SessionState> new_session(const protocol::Peer& peer) override {
+        return std::make_unique<Session>(link_, alive_, peer);
+    }
+    void power_on() override {
+        send_receive_.power_on();
+        link_.power_on();
+    }
+    void attach(frontends::StationServices& services) override { send_receive_.attach(services); }
+    void end_of_scan() override { send_receive_.end_of_scan(); }
+
+    frontends::Exchange stream(std::span<const std::uint8_t> pending, frontends::SessionState* session,
                                const frontends::Gate& gate) override {
-        auto result = link_.handle_stream(pending, gate);
+        auto* connection = dynamic_cast<Session*>(session);
+        auto result = link_.handle_stream(pending, gate, connection ? connection->caller : Caller{});
         if (result.kind == ComputerLink::Result::Kind::NeedMore) return frontends::Exchange::more();
         return report(pending.first(result.consumed), result);
     }
-    frontends::Exchange datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate) override {
-        auto result = link_.handle_datagram(datagram, gate);
+    frontends::Exchange datagram(std::span<const std::uint8_t> datagram, const frontends::Gate& gate,
+                                 const protocol::Peer& from) override {
+        auto result = link_.handle_datagram(datagram, gate, Caller{from.ipv4, from.port, link_.udp_connection()});
         return report(datagram, result);
     }
 
@@ -169,6 +229,8 @@ private:
     }
 
     ComputerLink link_;
+    SendReceive send_receive_;
+    std::shared_ptr<void> alive_ = std::make_shared<int>(0);   // the sessions' sign that the unit is still there
 };
 
 class Face final : public frontends::Face {
@@ -236,7 +298,7 @@ public:
                 options.timer_attributes[*value] = static_cast<std::uint8_t>(code);
             }
         }
-        if (at.has("parameters")) parse_parameters(at["parameters"], options);
+        if (at.has("parameters")) parse_parameters(at["parameters"], options, j.udp.has_value());
     }
 
     // A JW-51CM COM is two hex digits, compared in uppercase.
@@ -256,7 +318,7 @@ public:
         return link.map().check(cpu.memory());
     }
     std::unique_ptr<frontends::Unit> make_unit(devicemodel::Cpu& cpu, const frontends::Settings& s) const override {
-        return std::make_unique<Unit>(cpu, options_of(s));
+        return std::make_unique<Unit>(cpu, options_of(s), s.udp.has_value());
     }
 
     std::span<const frontends::ApiRoute> api_routes() const override;

@@ -30,7 +30,7 @@ class ToyUnit final : public frontends::Unit {
 public:
     explicit ToyUnit(const frontends::Face& face) : face_(face) {}
     const frontends::Face& face() const override { return face_; }
-    std::unique_ptr<frontends::SessionState> new_session() override { return std::make_unique<ToySession>(); }
+    std::unique_ptr<frontends::SessionState> new_session(const protocol::Peer&) override { return std::make_unique<ToySession>(); }
 
     frontends::Exchange stream(std::span<const std::uint8_t> pending, frontends::SessionState* session,
                                const frontends::Gate& gate) override {

@@ -150,8 +150,8 @@ TEST_CASE("JW-51CM buffer parameters: a bad one is refused at start, naming it",
     auto r = run_sim({"--check-config", bad.string()});
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("parameter 1413") != std::string::npos);
-    auto address = dir.write("address.json", R"({"kind": "sharp-jw", "jw51cm": {"parameters": {"0100": "00"}}})");
+    auto address = dir.write("address.json", R"({"kind": "sharp-jw", "jw51cm": {"parameters": {"0000": "C0"}}})");
     r = run_sim({"--check-config", address.string()});
     CHECK(r.exit_code == 2);
-    CHECK(r.err.find("/jw51cm/parameters/0100") != std::string::npos);
+    CHECK(r.err.find("/jw51cm/parameters/0000") != std::string::npos);
 }
