@@ -6,6 +6,7 @@
 // "Threads"); a connection's reads and writes may run on other threads meanwhile.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -157,8 +158,12 @@ public:
     // Differential mode (--compare; docs/twin.md, "Compare"): its counts and
     // last differences; null without it.
     Comparison* comparison() { return comparison_.get(); }
-    // Waits `timer` on this station's clock (a relay that got no answer).
-    StrandTask<> wait_on_clock(std::chrono::milliseconds timer);
+    // Waits `timer` on this station's clock (a relay that got no answer, a
+    // delay on the way). With `given_up`: returns early once it is set and
+    // stop_waiting() ran (a relay's monitoring timer when the answer came).
+    StrandTask<> wait_on_clock(std::chrono::microseconds timer, std::shared_ptr<const std::atomic<bool>> given_up = nullptr);
+    // On its strand: the waits on its clock look again at their conditions.
+    void stop_waiting();
     // Whether a request is served as soon as it is whole (instant timing):
     // then a transport may serve on its own strand and skip the clock.
     bool serves_at_once() const { return !scan_ || timing_mode_ == config::TimingMode::Instant; }
