@@ -268,7 +268,7 @@ std::string node_plant(const TempDir& dir, std::uint16_t search_port, unsigned m
 }
 
 // 0E30, 3E binary, client MAC and IP zeros (as slmp nodes sends it).
-const char* kNodeSearch = "50 00 00 FF FF 03 00 13 00 10 00 30 0E 00 00 00 00 00 00 00 00 04 00 00 00 00";
+const char* kNodeSearch = "50 00 00 FF FF 03 00 11 00 10 00 30 0E 00 00 00 00 00 00 00 00 04 00 00 00 00";
 
 }  // namespace
 
