@@ -327,3 +327,53 @@ TEST_CASE("slmp nodes --broadcast finds every node station of a plant", "[cli][n
     REQUIRE(table.exit_code == 0);
     CHECK(lines_of(table.out).size() == 4);   // the header and three nodes
 }
+
+TEST_CASE("model timing: the module's Ke, each relay's Ke and the target's time all count against the monitoring timer",
+          "[route][plant][timing]") {
+    // Every station: model timing, Ke 100 ms, nothing else. The request's timer
+    // is 250 ms. gw holds it 100 ms (its Ke), then 150 ms remain on gw's clock;
+    // relay passes it on after its Ke, packer answers after its Ke: 300 ms in
+    // all, so gw answers CF71 at 250 ms unless packer's clock is stepped first.
+    const std::string timing = R"("timing": {"mode": "model", "ke_ms": 100, "kdt_ms": 0, "scan_wait": false})";
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "http": {"enabled": true, "port": 0}, "stations": [
+        {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "networks": [{"number": 1, "station": 1}], )" + timing + R"(},
+        {"name": "relay", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 1, "station": 4}, {"number": 2, "station": 1}], )" +
+                                     timing + R"(},
+        {"name": "packer", "profile": "R08CPU", "tcp_port": 0, "networks": [{"number": 2, "station": 3}], "devices": {"D100": 4660}, )" +
+                                     timing + "}]}",
+                                 {"--clock", "frozen"}));
+    const auto api = sim.http_port();
+    auto gw = TcpClient::open(tcp_of(sim, "gw"));
+    const auto read = hex("50 00 02 03 FF 03 00 0C 00 01 00 01 04 00 00 64 00 00 A8 01 00");
+    auto quiet = [&] { return gw.recv_some(std::chrono::milliseconds(0)).status == RecvStatus::Timeout; };
+    auto answer = [&] {
+        Bytes frame;
+        REQUIRE(gw.response(&frame));
+        return show(frame);
+    };
+    // In time: 100 + 100 + 100 ms, packer stepped before gw's timer runs out.
+    REQUIRE(gw.send(read));
+    await_waiting(api, "gw", 1);   // held for its Ke
+    step(api, "gw", R"({"ms": 100})");
+    await_waiting(api, "relay", 1);
+    step(api, "relay", R"({"ms": 100})");
+    await_waiting(api, "packer", 1);
+    step(api, "packer", R"({"ms": 100})");
+    CHECK(answer() == show(hex("D0 00 02 03 FF 03 00 04 00 00 00 34 12")));
+    await_waiting(api, "gw", 0);   // its timer gave up waiting once the answer was in
+    // Too late: gw's clock reaches 250 ms (its 100 ms Ke + 150) while packer still holds it.
+    REQUIRE(gw.send(read));
+    await_waiting(api, "gw", 1);
+    step(api, "gw", R"({"ms": 100})");
+    await_waiting(api, "relay", 1);
+    step(api, "relay", R"({"ms": 100})");
+    await_waiting(api, "packer", 1);
+    step(api, "gw", R"({"ms": 149})");
+    await_waiting(api, "gw", 1);
+    CHECK(quiet());
+    step(api, "gw", R"({"ms": 1})");
+    CHECK(answer() == show(hex("D0 00 02 03 FF 03 00 0B 00 71 CF 02 03 FF 03 00 01 04 00 00")));
+    step(api, "packer", R"({"ms": 100})");   // served then; its answer is dropped
+    await_waiting(api, "packer", 0);
+    CHECK(quiet());
+}
