@@ -85,7 +85,7 @@ TEST_CASE("network map: a network no relay station links answers 4A01, more than
     CHECK(p.map.find(gw, 9, 9).error == EndCode::RouteTooManyRelays);
 }
 
-TEST_CASE("network map: routing parameters replace the derived way hop by hop; no way on 4A01, a loop 4A03", "[route]") {
+TEST_CASE("network map: routing parameters replace the derived way hop by hop, no way on is 4A01, a loop 4A03", "[route]") {
     Plant p;
     auto& gw = p.add("gw", {on(1, 1)}, {{2, 1, 3}, {3, 1, 2}, {4, 1, 2}});
     auto& other = p.add("other-gw", {on(1, 6)});
