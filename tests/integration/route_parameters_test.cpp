@@ -8,7 +8,6 @@
 #include <netinet/in.h>
 #include <sys/socket.h>
 
-#include <map>
 #include <set>
 
 #include "ask.hpp"
@@ -281,29 +280,31 @@ TEST_CASE("node search by broadcast: every node station of a plant answers after
     UdpClient client;
     const int on = 1;
     REQUIRE(::setsockopt(client.fd(), SOL_SOCKET, SO_BROADCAST, &on, sizeof on) == 0);
-    REQUIRE(client.send_to(port, hex(kNodeSearch), "127.255.255.255"));
-    // Each node waits its delay on its own clock (press, no node, ignores it).
-    for (const auto* name : {"cam-1", "cam-2", "cam-3"}) await_waiting(api, name, 1);
-    CHECK_FALSE(client.receive(std::chrono::milliseconds(0)));
-    for (const auto* name : {"cam-1", "cam-2", "cam-3"}) step(api, name, R"({"ms": 1500})");
-    std::map<std::uint16_t, Bytes> answers;   // by the port they came from
-    for (int i = 0; i < 3; ++i) {
-        std::uint16_t from = 0;
-        auto answer = client.receive(kReplyTimeout, &from);
-        REQUIRE(answer);
-        CHECK(from == port);
-        answers[static_cast<std::uint16_t>(i)] = *answer;
+    const std::string ascii_search = "500000FF03FF000022" "0010" "0E30" "0000" "000000000000" "04" "00000000";
+    for (const auto& request : {hex(kNodeSearch), Bytes(ascii_search.begin(), ascii_search.end())}) {
+        INFO(show(request));
+        REQUIRE(client.send_to(port, request, "127.255.255.255"));
+        // Each node waits its delay on its own clock (press, no node, ignores it).
+        for (const auto* name : {"cam-1", "cam-2", "cam-3"}) await_waiting(api, name, 1);
+        CHECK_FALSE(client.receive(std::chrono::milliseconds(0)));
+        for (const auto* name : {"cam-1", "cam-2", "cam-3"}) step(api, name, R"({"ms": 1500})");
+        std::set<std::string> broadcast;
+        for (int i = 0; i < 3; ++i) {
+            std::uint16_t from = 0;
+            auto answer = client.receive(kReplyTimeout, &from);
+            REQUIRE(answer);
+            CHECK(from == port);
+            broadcast.insert(show(*answer));
+        }
+        CHECK_FALSE(client.receive(std::chrono::milliseconds(200)));   // press is no node: no fourth answer
+        // Each answer is byte for byte the one the station gives on its own UDP port.
+        std::set<std::string> directed;
+        for (const auto* name : {"cam-1", "cam-2", "cam-3"}) {
+            UdpClient own;
+            directed.insert(show(ask(own, udp_of(sim, name), request)));
+        }
+        CHECK(broadcast == directed);
     }
-    CHECK_FALSE(client.receive(std::chrono::milliseconds(200)));   // press is no node: no fourth answer
-    // Each answer is byte for byte the one the station gives on its own UDP port.
-    std::set<std::string> directed;
-    for (const auto* name : {"cam-1", "cam-2", "cam-3"}) {
-        UdpClient own;
-        directed.insert(show(ask(own, udp_of(sim, name), hex(kNodeSearch))));
-    }
-    std::set<std::string> broadcast;
-    for (const auto& [i, answer] : answers) broadcast.insert(show(answer));
-    CHECK(broadcast == directed);
 }
 
 TEST_CASE("slmp nodes --broadcast finds every node station of a plant", "[cli][node][plant]") {
