@@ -124,7 +124,10 @@ struct MultidropConfig {
 struct NetworkConfig {
     std::uint16_t number = 0;
     devicemodel::DeviceSizes sizes{};
-    std::uint8_t station = 0;   // 1-120; 0: not set (the network's link devices only)
+    // 1-120, or 121-65534 on a network that numbers its stations past 120
+    // (CC-Link IE TSN: reached only as station 7C of the station-number-
+    // extended frame); 0: not set (the network's link devices only).
+    std::uint16_t station = 0;
     bool master = false;        // the network's control/master station (routes 7D/7E)
     // What this station sends to the others at each link scan: ranges of its
     // LB/LW (J□\B, J□\W); by default 256 of each from (station − 1) × 256.
@@ -134,6 +137,25 @@ struct NetworkConfig {
         std::uint32_t count = 0;                          // B: a multiple of 16
     };
     std::vector<Range> send;
+};
+
+// A routing parameter, as GX Works sets it on a station (docs/plants.md,
+// "Routing parameters"): to reach network `network`, this station passes a
+// request to station `via_station` of its own network `via_network`. Without
+// one for a network the way is derived from the plant's networks.
+struct RouteConfig {
+    std::uint16_t network = 0;       // transfer destination network No.
+    std::uint16_t via_network = 0;   // relay destination network No. (one this station is on)
+    std::uint16_t via_station = 0;   // relay destination station No. on it
+};
+
+// Node search by broadcast (docs/nodes.md, "Node search over UDP"): a UDP
+// port shared by every node station of the host (SO_REUSEADDR), bound to the
+// broadcast address of the station's bind address, on which 0E30 is answered
+// after a random 0..max_delay_ms wait on the station's clock.
+struct NodeSearchConfig {
+    std::uint16_t port = 0;               // 0: no broadcast search port
+    std::uint32_t max_delay_ms = 1500;    // the manual's 0-1500 ms
 };
 
 // CPU No.2–4 of a multi-CPU system (module I/O 03E1–03E3).
@@ -225,6 +247,8 @@ struct ServerConfig {
     HttpConfig http;
     std::vector<ModuleConfig> modules;     // on CPU No.1
     std::vector<NetworkConfig> networks;   // on CPU No.1
+    std::vector<RouteConfig> routes;       // routing parameters given by hand (the rest derived)
+    NodeSearchConfig node_search;          // node search by broadcast
     std::vector<CpuConfig> cpus;           // CPU No.2–4
     std::optional<RedundantConfig> redundant;   // one CPU of a redundant pair
     std::optional<MultidropConfig> multidrop;   // a multidrop station behind another's serial module

@@ -1,6 +1,8 @@
 // What is mounted beside CPU No.1: intelligent function modules (buffer
 // memory), network modules (link devices), and CPU No.2–4 of a multi-CPU
 // system. Keys: docs/configuration.md "Modules, networks and CPUs".
+#include <algorithm>
+
 #include "config/config_parts.hpp"
 #include "config/settings.hpp"
 
@@ -63,10 +65,10 @@ NetworkConfig network(const JsonAt& at) {
     check_keys(at, Section::Network);
     NetworkConfig n;
     n.number = static_cast<std::uint16_t>(bounded_setting(at, Section::Network, "number"));
-    if (at.has("station")) n.station = static_cast<std::uint8_t>(bounded_setting(at, Section::Network, "station"));
+    if (at.has("station")) n.station = static_cast<std::uint16_t>(bounded_setting(at, Section::Network, "station"));
     if (at.has("master")) {
         n.master = at["master"].boolean();
-        if (n.master && n.station == 0) at["master"].fail("a master station needs its station No.", "add \"station\": 1-120");
+        if (n.master && n.station == 0) at["master"].fail("a master station needs its station No.", "add \"station\": 1-65534");
     }
     auto set = [&](Area a, std::uint32_t points) { n.sizes[static_cast<std::size_t>(a)] = points; };
     set(Area::X, 16384);
@@ -83,12 +85,12 @@ NetworkConfig network(const JsonAt& at) {
             set(area, points);
         }
     if (at.has("send")) {
-        if (n.station == 0) at["send"].fail("only a station with a station No. sends", "add \"station\": 1-120");
+        if (n.station == 0) at["send"].fail("only a station with a station No. sends", "add \"station\": 1-65534");
         auto list = at["send"];
         list.expect_array();
         for (std::size_t i = 0; i < list.json().size(); ++i) n.send.push_back(send_range(list[i], n.sizes));
     } else if (n.station != 0) {   // chosen default: 256 LB and 256 LW a station, in station order (docs/plants.md)
-        const std::uint32_t first = (n.station - 1u) * 256u;
+        const std::uint32_t first = (n.station - 1u) * 256u;   // none past the link devices (station 129 on)
         for (const char* symbol : {"B", "W"}) {
             const auto* spec = devicemodel::find_by_symbol(symbol);
             if (first + 256u <= n.sizes[static_cast<std::size_t>(spec->area)]) n.send.push_back({spec, first, 256});
@@ -130,6 +132,50 @@ MultidropConfig multidrop(const JsonAt& at) {
     return m;
 }
 
+// {"network": 3, "via_network": 1, "via_station": 2} (docs/plants.md, "Routing parameters").
+RouteConfig route(const JsonAt& at) {
+    check_keys(at, Section::Route);
+    RouteConfig r;
+    r.network = static_cast<std::uint16_t>(bounded_setting(at, Section::Route, "network"));
+    r.via_network = static_cast<std::uint16_t>(bounded_setting(at, Section::Route, "via_network"));
+    r.via_station = static_cast<std::uint16_t>(bounded_setting(at, Section::Route, "via_station"));
+    return r;
+}
+
+// A routing parameter leaves through one of the station's own network modules
+// for a network it is not on, once per network (GX Works' table has one row a
+// destination). Whether the relay station exists is the plant's check.
+void check_routes(const JsonAt& root, const ServerConfig& config) {
+    auto module_on = [&](std::uint16_t number) {
+        return std::any_of(config.networks.begin(), config.networks.end(),
+                           [&](const NetworkConfig& n) { return n.number == number && n.station != 0; });
+    };
+    for (std::size_t i = 0; i < config.routes.size(); ++i) {
+        const auto& r = config.routes[i];
+        auto at = root["routes"][i];
+        if (module_on(r.network))
+            at["network"].fail("this station is on network " + std::to_string(r.network) + " itself",
+                               "a routing parameter is for another network; remove it");
+        if (!module_on(r.via_network))
+            at["via_network"].fail("this station has no module with a station No. on network " +
+                                       std::to_string(r.via_network),
+                                   "name one of its \"networks\" entries with a \"station\"");
+        for (std::size_t j = 0; j < i; ++j)
+            if (config.routes[j].network == r.network)
+                at["network"].fail("network " + std::to_string(r.network) + " has a routing parameter already",
+                                   "give one route a destination network");
+    }
+}
+
+NodeSearchConfig node_search(const JsonAt& at) {
+    check_keys(at, Section::NodeSearch);
+    NodeSearchConfig n;
+    n.port = static_cast<std::uint16_t>(bounded_setting(at, Section::NodeSearch, "port"));
+    if (at.has("max_delay_ms"))
+        n.max_delay_ms = static_cast<std::uint32_t>(bounded_setting(at, Section::NodeSearch, "max_delay_ms"));
+    return n;
+}
+
 template <typename T, typename Parse>
 std::vector<T> list(const JsonAt& root, std::string_view key, Parse parse) {
     std::vector<T> items;
@@ -150,12 +196,15 @@ void parse_hardware(const JsonAt& root, ServerConfig& config) {
             if (config.networks[i].number == config.networks[j].number)
                 root["networks"][i]["number"].fail("network " + std::to_string(config.networks[i].number) + " is configured twice",
                                                    "a station has one module on each network");
+    config.routes = list<RouteConfig>(root, "routes", route);
+    check_routes(root, config);
     config.cpus = list<CpuConfig>(root, "cpus", cpu);
     for (std::size_t i = 0; i < config.cpus.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (config.cpus[i].number == config.cpus[j].number)
                 root["cpus"][i]["number"].fail("CPU No." + std::to_string(config.cpus[i].number) + " is configured twice",
                                                "give each CPU its own number");
+    if (root.has("node_search")) config.node_search = node_search(root["node_search"]);
     if (root.has("redundant")) config.redundant = redundant(root["redundant"]);
     if (root.has("multidrop")) config.multidrop = multidrop(root["multidrop"]);
     if (config.redundant && config.multidrop)

@@ -156,6 +156,7 @@ public:
 
     std::vector<StationConfig> take() {
         check_pairs();
+        check_routes();
         return std::move(stations_);
     }
 
@@ -225,6 +226,24 @@ private:
                     throw ConfigError(where(t.server.name) + ": /redundant/pair: '" + t.server.redundant->pair +
                                       "' is in the pair of '" + name + "' and '" + r->pair + "' already; a CPU is in one pair");
         }
+    }
+
+    // A routing parameter's relay destination is a station of the plant on
+    // that network (docs/plants.md, "Routing parameters").
+    void check_routes() const {
+        for (const auto& s : stations_)
+            for (std::size_t i = 0; i < s.server.routes.size(); ++i) {
+                const auto& r = s.server.routes[i];
+                const auto key = std::to_string(r.via_network) + "/" + std::to_string(r.via_station);
+                const auto relay = network_stations_.find(key);
+                const auto where = source_ + ", station '" + s.server.name + "': /routes/" + std::to_string(i);
+                if (relay == network_stations_.end())
+                    throw ConfigError(where + "/via_station: network " + std::to_string(r.via_network) + " has no station No. " +
+                                      std::to_string(r.via_station) + "; name a station of the plant on it");
+                if (relay->second == s.server.name)
+                    throw ConfigError(where + "/via_station: station No. " + std::to_string(r.via_station) + " of network " +
+                                      std::to_string(r.via_network) + " is this station; name the relay station");
+            }
     }
 
     std::string source_;

@@ -144,6 +144,13 @@ constexpr Setting kSettings[] = {
      .help = "intelligent function modules with buffer memory ([below](#modules-networks-and-cpus))", .holds = S::Module},
     {.section = S::Station, .key = "networks", .flag = "", .type = T::Array, .default_text = "none",
      .help = "network modules and their link devices ([below](#modules-networks-and-cpus))", .holds = S::Network},
+    {.section = S::Station, .key = "routes", .flag = "", .type = T::Array, .default_text = "derived",
+     .help = "routing parameters: `[{\"network\": 3, \"via_network\": 1, \"via_station\": 2}]` — the way to "
+             "another network instead of the derived one ([plants.md](plants.md#routing-parameters))",
+     .holds = S::Route},
+    {.section = S::Station, .key = "node_search", .flag = "", .type = T::Object, .default_text = "none",
+     .help = "node search by broadcast for a station whose profile serves the node commands: `{\"port\": 45237, "
+             "\"max_delay_ms\": 1500}` ([nodes.md](nodes.md#node-search-over-udp))", .holds = S::NodeSearch},
     {.section = S::Station, .key = "cpus", .flag = "", .type = T::Array, .default_text = "none",
      .help = "CPU No.2–4 of a multi-CPU system ([below](#modules-networks-and-cpus))", .holds = S::MultiCpu},
     {.section = S::Station, .key = "redundant", .flag = "", .type = T::Object, .default_text = "none",
@@ -170,12 +177,13 @@ constexpr Setting kSettings[] = {
     {.section = S::Network, .key = "number", .flag = "", .type = T::Integer, .min = 1, .max = 239,
      .default_text = "required", .help = "network No. 1–239, reached as `J1\\W100`", .fix = "use 1-239",
      .doc_type = "number", .required = true, .below_min = "network numbers start at 1", .plain_range = true},
-    {.section = S::Network, .key = "station", .flag = "", .type = T::Integer, .min = 1, .max = 120,
+    {.section = S::Network, .key = "station", .flag = "", .type = T::Integer, .min = 1, .max = 65534,
      .default_text = "not set",
      .help = "the station No. (1–120) of this station's module on that network: requests routed through another "
-             "station's network/Ethernet module reach this CPU by it ([plants.md](plants.md#networks-and-routes)); not "
-             "set: the link devices only",
-     .fix = "use 1-120", .doc_type = "number", .below_min = "station numbers start at 1", .plain_range = true},
+             "station's network/Ethernet module reach this CPU by it ([plants.md](plants.md#networks-and-routes)); "
+             "121–65534 (a CC-Link IE TSN network's numbering) only as station 7C of the station-number-extended "
+             "frame ([plants.md](plants.md#extended-station-numbers)); not set: the link devices only",
+     .fix = "use 1-65534", .doc_type = "number", .below_min = "station numbers start at 1", .plain_range = true},
     {.section = S::Network, .key = "master", .flag = "", .type = T::Boolean, .default_text = "the lowest station No.",
      .help = "`true`: this station is the network's control/master station (routes with station No. 7D/7E); one a "
              "network"},
@@ -202,6 +210,33 @@ constexpr Setting kSettings[] = {
     {.section = S::Multidrop, .key = "number", .flag = "", .type = T::Integer, .max = 31, .default_text = "required",
      .help = "the multidrop station No. 0–31", .fix = "use 0-31", .doc_type = "number", .required = true,
      .plain_range = true},
+    {.section = S::Route, .key = "network", .flag = "", .type = T::Integer, .min = 1, .max = 239,
+     .default_text = "required", .help = "the transfer destination network No. 1–239: a network this station is not on",
+     .fix = "use 1-239", .doc_type = "number", .required = true, .below_min = "network numbers start at 1",
+     .plain_range = true},
+    {.section = S::Route, .key = "via_network", .flag = "", .type = T::Integer, .min = 1, .max = 239,
+     .default_text = "required",
+     .help = "the relay destination network No.: one of this station's `networks` with a station No.",
+     .fix = "use 1-239", .doc_type = "number", .required = true, .below_min = "network numbers start at 1",
+     .plain_range = true},
+    {.section = S::Route, .key = "via_station", .flag = "", .type = T::Integer, .min = 1, .max = 65534,
+     .default_text = "required",
+     .help = "the relay destination station No. on `via_network`: the station that passes the request on (or serves "
+             "it, when it is on `network`)",
+     .fix = "use 1-65534", .doc_type = "number", .required = true, .below_min = "station numbers start at 1",
+     .plain_range = true},
+    {.section = S::NodeSearch, .key = "port", .flag = "", .type = T::Integer, .min = 1, .max = 65535,
+     .default_text = "required",
+     .help = "the UDP port node search broadcasts go to (the manual's B0B5 = 45237); every node station of the host may "
+             "give the same one: it is bound with SO_REUSEADDR to the broadcast address of `bind` (127.x.x.x: "
+             "127.255.255.255; otherwise 0.0.0.0)",
+     .fix = "use 1-65535", .doc_type = "number", .required = true, .below_min = "port 0 is no port",
+     .plain_range = true},
+    {.section = S::NodeSearch, .key = "max_delay_ms", .flag = "", .type = T::Integer, .max = 60000,
+     .default_text = "1500",
+     .help = "each answer to a broadcast node search waits a random 0–this many ms on the station's clock (the "
+             "manual's 0–1500 ms; 0: at once)",
+     .fix = "use 0-60000", .doc_type = "number", .plain_range = true},
     {.section = S::MultiCpu, .key = "number", .flag = "", .type = T::Integer, .min = 2, .max = 4,
      .default_text = "required", .help = "2, 3 or 4: reached with module I/O 03E1–03E3 (03E0 and 03FF are CPU No.1)",
      .fix = "use 2, 3 or 4", .doc_type = "number", .required = true,
@@ -655,6 +690,8 @@ constexpr SectionInfo kSections[] = {
     {S::MultiCpu, "cpus[]", "hardware"},
     {S::Redundant, "redundant", "hardware"},
     {S::Multidrop, "multidrop", "hardware"},
+    {S::Route, "routes[]", "hardware"},
+    {S::NodeSearch, "node_search", "hardware"},
     {S::Drive, "drives.N", "cpu", true},
     {S::Label, "labels[]", "labels"},
     {S::Structure, "structures[]", "labels"},

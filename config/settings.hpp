@@ -39,6 +39,8 @@ enum class Section : std::uint8_t {
     MultiCpu,      // an entry of "cpus" (CPU No.2-4)
     Redundant,     // "redundant": one CPU of a redundant pair
     Multidrop,     // "multidrop": a station behind another's serial module
+    Route,         // an entry of "routes": a routing parameter
+    NodeSearch,    // "node_search": node search by broadcast
     Drive,         // a value of "drives" (keyed by drive number)
     Label,         // an entry of "labels"
     Structure,     // an entry of "structures"

@@ -131,11 +131,12 @@ Request Engine::decode(std::span<const std::uint8_t> input, DataCodePolicy polic
     if (request.route_error == EndCode::Ok && any_row && any_row->file_route() && !file_route_allowed(header.route))
         request.route_error = EndCode::RouteNotCpu;
     // A module's port passes another station's request on undecoded: that
-    // station's CPU decodes it (the 7C extended station Nos. have no router).
+    // station's CPU decodes it. In the station-number-extended frame a station
+    // No. other than 7C comes with extended station No. 0000 (else 4A02 here).
     const bool other_station =
         request.route_error == EndCode::RouteNetworkNotFound || request.route_error == EndCode::RouteStationNotFound;
-    request.elsewhere = ports_[0].relays && !routed && other_station &&
-                        !(header.kind == FrameKind::Ext && header.route.station == 0x7C);
+    const bool stray_extended = header.kind == FrameKind::Ext && header.route.station != 0x7C && header.extended_station != 0;
+    request.elsewhere = ports_[0].relays && !routed && other_station && !stray_extended;
     if (request.spec && request.spec->decode && !request.elsewhere) {
         // The target CPU's limits apply; a request with a bad route is refused
         // before its operands matter, but the scenario hook still sees them.

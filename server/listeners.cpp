@@ -26,6 +26,19 @@ std::vector<frontends::Settings> served_faces(const config::ServerConfig& config
 Listeners::Listeners(const station::Home& home, station::Station& station, const config::ServerConfig& config,
                      const config::FrontEndsConfig& frontends, const boost::asio::ip::address& bind, bool shared_loop) {
     for (const auto& settings : served_faces(config, frontends)) listen_face(home, station, config, settings, bind, shared_loop);
+    // Node search by broadcast: only a port that serves the node commands answers it (docs/nodes.md).
+    if (config.node_search.port != 0 && station.engine().port().node_commands) {
+        const auto udp = udp_ports();
+        try {
+            node_search_ = std::make_unique<NodeSearchListener>(home, station, config.node_search, bind,
+                                                                udp.empty() ? config.node_search.port : udp.front());
+        } catch (const boost::system::system_error& e) {
+            throw config::ConfigError("cannot listen for node search on UDP " +
+                                      NodeSearchListener::search_address(bind).to_string() + ":" +
+                                      std::to_string(config.node_search.port) + ": " + e.code().message() +
+                                      "; choose another \"node_search\" port");
+        }
+    }
     if (!faces_.empty()) {
         station_ = &station;
         station::Station::FrontEnds units;
@@ -94,6 +107,7 @@ void Listeners::stop() {
         f.services->stop();
     }
     if (serial_) serial_->stop();
+    if (node_search_) node_search_->stop();
 }
 
 void Listeners::refuse_connections(bool refusing) {

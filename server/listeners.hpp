@@ -18,6 +18,7 @@
 #include "config/frontend_config.hpp"
 #include "frontends/face.hpp"
 #include "server/face_services.hpp"
+#include "server/node_search.hpp"
 #include "server/serial_port.hpp"
 #include "server/tcp_listener.hpp"
 #include "server/udp_listener.hpp"
@@ -68,6 +69,7 @@ private:
     station::Station* station_ = nullptr;   // whose frontends() name ours (cleared on destruction)
     std::vector<Served> faces_;             // in registration order (frontends/registry.cpp)
     std::unique_ptr<SerialPort> serial_;
+    std::unique_ptr<NodeSearchListener> node_search_;   // a node station's broadcast search port, when configured
 };
 
 // "5000,5001", or "-" for none (log lines and the ready file).

@@ -109,7 +109,7 @@ Server::Server(const config::PlantConfig& plant)
 void Server::join_networks() {
     for (auto& s : stations_) {
         const auto& server = s->settings.server;
-        networks_.add(s->station, server.name, server.networks);
+        networks_.add(s->station, server.name, server.networks, server.routes);
         if (server.redundant) networks_.add_redundant(s->station, server.name, *server.redundant);
         if (server.multidrop) networks_.add_multidrop(s->station, server.name, *server.multidrop);
     }

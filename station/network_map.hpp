@@ -37,17 +37,23 @@ struct Relay {
 class NetworkMap {
 public:
     // `station` with its network modules (the "networks" entries with a
-    // station No.), as the plant's configuration checked them.
-    void add(Station& station, const std::string& name, const std::vector<config::NetworkConfig>& networks);
+    // station No.) and its routing parameters, as the plant's configuration
+    // checked them.
+    void add(Station& station, const std::string& name, const std::vector<config::NetworkConfig>& networks,
+             const std::vector<config::RouteConfig>& routes = {});
 
     struct Found {
         protocol::EndCode error = protocol::EndCode::Ok;   // 4A01, 4A02, 4A03 (docs/end-codes.md)
         Relay relay;   // target == &from: the receiving station itself
     };
     // The station a request that reached `from` names with `network`/`station`
-    // (§3.1.3: 7D the configured master, 7E the current one), and the relay
-    // stations on the shortest way there: at most 7.
-    Found find(Station& from, std::uint8_t network, std::uint8_t station) const;
+    // (§3.1.3: 7D the configured master, 7E the current one), or with the
+    // station-number-extended frame's extended station No. when `extended`
+    // (§3.1.6: 0000 the configured master, else the station No. itself), and
+    // the relay stations on the way there, hop by hop: each station's routing
+    // parameter for the network, else the first relay station of its shortest
+    // way. At most 7 relay stations (a loop of routing parameters ends there).
+    Found find(Station& from, std::uint8_t network, std::uint16_t station, bool extended = false) const;
 
     // A redundant pair's CPU and a multidrop station (docs/plants.md), by the
     // names the configuration gives; link() makes them stations once every
@@ -73,7 +79,7 @@ public:
     struct Member {
         Station* station = nullptr;
         std::string name;
-        std::uint8_t number = 0;
+        std::uint16_t number = 0;
         bool master = false;
     };
     const std::map<std::uint16_t, std::vector<Member>>& networks() const { return networks_; }
@@ -81,7 +87,16 @@ public:
     static constexpr std::size_t kMaxRelayStations = 7;   // 8 networks in a route (SLMP Reference Manual §2.3)
 
 private:
-    const Member* member(std::uint16_t network, std::uint8_t station) const;
+    const Member* member(std::uint16_t network, std::uint16_t station, bool extended = false) const;
+    // The next station a request on its way to `network` goes to from `at`
+    // (a station with a module on a network other than `network`); null: none.
+    Station* next_hop(const Station& at, std::uint16_t network) const;
+
+    struct Via {   // a routing parameter: network -> its relay destination
+        std::uint16_t network;
+        std::uint16_t station;
+    };
+    std::map<const Station*, std::map<std::uint16_t, Via>> routes_;
 
     std::map<std::uint16_t, std::vector<Member>> networks_;
     std::map<const Station*, std::vector<std::uint16_t>> modules_;   // the networks each station is on
@@ -114,13 +129,20 @@ class Relays {
 public:
     // Carries `frame` through relay.hops (each adds its passing-on time in the
     // model timing mode) to relay.target, which serves it in its own timing
-    // mode; resumes the caller on its own strand with the answer. A target
-    // that does not answer gets the monitoring timer's CF71 from the port.
+    // mode; resumes the caller on its own strand with the answer. The
+    // request's monitoring timer runs on the receiving station's clock from
+    // now over the whole way: a target that does not answer, or answers later
+    // than the timer, gets CF71 from the port when it runs out (the late
+    // answer is dropped; the target has executed the request all the same).
+    // `spent`: the time the receiving module held it already (model timing: its Ke).
     StrandTask<Handled> pass_on(Relay relay, std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
-                                protocol::Peer peer);
+                                protocol::Peer peer, std::chrono::microseconds spent = {});
 
 private:
-    std::map<const Station*, std::optional<protocol::Session>> sessions_;
+    // The connection's session at one station; shared with a trip still under
+    // way after the port gave up on it (the connection may be gone by then).
+    using SharedSession = std::shared_ptr<std::optional<protocol::Session>>;
+    std::map<const Station*, SharedSession> sessions_;
 };
 
 }  // namespace slmp::station

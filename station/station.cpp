@@ -184,7 +184,15 @@ Handled Station::handle(Ticket& ticket, protocol::Session& session, const protoc
         if (ticket.service) forwarded->modelled = ticket.service->modelled;
         return std::move(*forwarded);
     }
-    if (auto relayed = route(ticket.request, ticket.bytes, ticket.policy)) return std::move(*relayed);
+    // A request the module passes on: its modelled time here (Ke) is the first
+    // part of the monitoring timer's way (Relays::pass_on); when that alone
+    // runs past the timer, the module answers CF71 itself (serve()).
+    const bool timed_out = ticket.service && ticket.service->timed_out;
+    if (!timed_out)
+        if (auto relayed = route(ticket.request, ticket.bytes, ticket.policy)) {
+            if (ticket.service) relayed->modelled = ticket.service->modelled;
+            return std::move(*relayed);
+        }
     return serve(std::move(ticket.request), ticket.bytes, session, peer, ticket.service ? &*ticket.service : nullptr);
 }
 
@@ -210,8 +218,20 @@ std::optional<Handled> Station::route(protocol::Request& request, std::span<cons
     const auto* row = request.spec ? request.spec : protocol::find_any_row(request.command);
     const bool file = row && row->file_route();
     NetworkMap::Found found;
+    // The station-number-extended frame's station 7C names its station by the
+    // extended station No. (§3.1.6); that frame travels only through stations
+    // whose ports take it (§2.3: RJ71GN11-T2), others cannot be reached by it.
+    const bool extended_frame = request.header.kind == protocol::FrameKind::Ext;
     if (request.elsewhere) {
-        found = network_map_->find(*this, route.network, route.station);
+        const bool by_extended = extended_frame && route.station == 0x7C;
+        found = network_map_->find(*this, route.network, by_extended ? request.header.extended_station : route.station,
+                                   by_extended);
+        if (found.error == protocol::EndCode::Ok && extended_frame)
+            for (const auto* station : found.relay.hops)
+                if (station != this && !station->engine_.port().station_extended_frame)
+                    found.error = protocol::EndCode::RouteStationNotFound;
+        if (found.error == protocol::EndCode::Ok && extended_frame && !found.relay.target->engine_.port().station_extended_frame)
+            found.error = protocol::EndCode::RouteStationNotFound;
     } else {
         const bool by_pair = route.module_io >= 0x03D0 && route.module_io <= 0x03D3;
         if (!(by_pair || file)) return std::nullopt;
@@ -269,7 +289,9 @@ std::optional<Handled> Station::to_upstream(const protocol::Request& request) co
 
 StrandTask<Handled> Station::pass_on(Handled pending, std::vector<std::uint8_t> frame, protocol::DataCodePolicy policy,
                                      Relays& relays, protocol::Session& session, protocol::Peer peer) {
-    if (pending.relay) co_return co_await relays.pass_on(std::move(*pending.relay), std::move(frame), policy, std::move(peer));
+    if (pending.relay)
+        co_return co_await relays.pass_on(std::move(*pending.relay), std::move(frame), policy, std::move(peer),
+                                          pending.modelled.value_or(std::chrono::microseconds{0}));
     co_return co_await asio::co_spawn(home(), forward(std::move(frame), policy, session, std::move(peer), pending.modelled),
                                       use_strand);
 }
@@ -405,7 +427,7 @@ StrandTask<std::optional<Handled>> Station::pass_through(std::vector<std::uint8_
     if (!receiving && timing_mode_ == config::TimingMode::Model) {
         const bool ascii = engine_.frame(frame, policy).header.codec == protocol::Codec::Ascii;
         const std::chrono::duration<double, std::milli> ke(ascii ? timing_model_.ke_ascii_ms : timing_model_.ke_binary_ms);
-        co_await wait_on_clock(std::chrono::duration_cast<std::chrono::milliseconds>(ke));
+        co_await wait_on_clock(std::chrono::duration_cast<std::chrono::microseconds>(ke));
     }
     if (!scenario_.active()) co_return std::nullopt;
     // Its faults match the request as it passes (a module reads only the header of another station's request).
@@ -413,9 +435,9 @@ StrandTask<std::optional<Handled>> Station::pass_through(std::vector<std::uint8_
     if (!request.complete() || !request.has_command) co_return std::nullopt;
     scenarios::Incoming incoming{std::move(request)};
     auto plan = scenario_.before(incoming, frame, passing_, peer);
-    if (plan.pass()) {   // a delay holds it here; the other deliveries are the target's answer's
-        if (plan.delivery.delay.count() > 0)
-            co_await wait_on_clock(std::chrono::duration_cast<std::chrono::milliseconds>(plan.delivery.delay));
+    if (plan.pass()) {   // a delay holds it here (the plan's decision: its delivery is set only after an answer)
+        const std::chrono::duration<double, std::milli> delay(plan.decision.delay_ms);
+        if (delay.count() > 0) co_await wait_on_clock(std::chrono::duration_cast<std::chrono::microseconds>(delay));
         co_return std::nullopt;
     }
     Handled refused;
@@ -425,11 +447,15 @@ StrandTask<std::optional<Handled>> Station::pass_through(std::vector<std::uint8_
     co_return refused;
 }
 
-StrandTask<> Station::wait_on_clock(std::chrono::milliseconds timer, std::function<bool()> wanted) {
+StrandTask<> Station::wait_on_clock(std::chrono::microseconds timer, std::function<bool()> wanted) {
     if (!scan_) co_return;
     const auto until = scan_->clock().now() + timer;
     while (scan_->clock().now() < until && !scan_->stopped() && (!wanted || wanted()))
         co_await scan_->until_end_or(std::nullopt, until);
+}
+
+void Station::stop_waiting() {
+    if (scan_) scan_->nudge();
 }
 
 Handled Station::serve(protocol::Request request, std::span<const std::uint8_t> input, protocol::Session& session,

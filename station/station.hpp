@@ -6,6 +6,7 @@
 // "Threads"); a connection's reads and writes may run on other threads meanwhile.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -158,9 +159,13 @@ public:
     // Differential mode (--compare; docs/twin.md, "Compare"): its counts and
     // last differences; null without it.
     Comparison* comparison() { return comparison_.get(); }
-    // Waits `timer` on this station's clock (a relay that got no answer);
-    // `wanted`, when given, is asked at every END and ends the wait early once false.
-    StrandTask<> wait_on_clock(std::chrono::milliseconds timer, std::function<bool()> wanted = {});
+    // Waits `timer` on this station's clock (a relay that got no answer, a
+    // delay on the way, a face's timer). `wanted`, when given, is asked at
+    // every END and ends the wait early once false; stop_waiting() makes the
+    // waits ask at once (a relay's monitoring timer when the answer came).
+    StrandTask<> wait_on_clock(std::chrono::microseconds timer, std::function<bool()> wanted = {});
+    // On its strand: the waits on its clock look again at their conditions.
+    void stop_waiting();
     // Whether a request is served as soon as it is whole (instant timing):
     // then a transport may serve on its own strand and skip the clock.
     bool serves_at_once() const { return !scan_ || timing_mode_ == config::TimingMode::Instant; }

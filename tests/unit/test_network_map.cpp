@@ -18,7 +18,7 @@ using slmp::station::Station;
 
 namespace {
 
-slmp::config::NetworkConfig on(std::uint16_t network, std::uint8_t station, bool master = false) {
+slmp::config::NetworkConfig on(std::uint16_t network, std::uint16_t station, bool master = false) {
     slmp::config::NetworkConfig n;
     n.number = network;
     n.station = station;
@@ -29,9 +29,10 @@ slmp::config::NetworkConfig on(std::uint16_t network, std::uint8_t station, bool
 struct Plant {
     std::deque<Station> stations;
     NetworkMap map;
-    Station& add(const std::string& name, std::vector<slmp::config::NetworkConfig> networks) {
+    Station& add(const std::string& name, std::vector<slmp::config::NetworkConfig> networks,
+                 std::vector<slmp::config::RouteConfig> routes = {}) {
         auto& s = stations.emplace_back(slmp::config::load_profile("R08CPU"), slmp::protocol::EngineOptions{});
-        map.add(s, name, networks);
+        map.add(s, name, networks, routes);
         return s;
     }
 };
@@ -82,6 +83,42 @@ TEST_CASE("network map: a network no relay station links answers 4A01, more than
     CHECK(seven.relay.target == &end7);
     CHECK(seven.relay.hops.size() == 1 + NetworkMap::kMaxRelayStations);
     CHECK(p.map.find(gw, 9, 9).error == EndCode::RouteTooManyRelays);
+}
+
+TEST_CASE("network map: routing parameters replace the derived way hop by hop, no way on is 4A01, a loop 4A03", "[route]") {
+    Plant p;
+    auto& gw = p.add("gw", {on(1, 1)}, {{2, 1, 3}, {3, 1, 2}, {4, 1, 2}});
+    auto& other = p.add("other-gw", {on(1, 6)});
+    auto& a = p.add("relay-a", {on(1, 2), on(2, 1)}, {{4, 1, 1}});
+    auto& b = p.add("relay-b", {on(1, 3), on(2, 2)});
+    auto& packer = p.add("packer", {on(2, 3)});
+    p.add("island", {on(3, 1)});
+    p.add("island-4", {on(4, 1)});
+    // gw: by its parameter through relay-b; other-gw: derived, the first relay station (relay-a).
+    auto found = p.map.find(gw, 2, 3);
+    CHECK(found.relay.target == &packer);
+    CHECK(found.relay.hops == std::vector<Station*>{&gw, &b});
+    CHECK(p.map.find(other, 2, 3).relay.hops == std::vector<Station*>{&other, &a});
+    // relay-a has no way to network 3; gw and relay-a send network 4 back and forth.
+    CHECK(p.map.find(gw, 3, 1).error == EndCode::RouteNetworkNotFound);
+    CHECK(p.map.find(gw, 4, 1).error == EndCode::RouteTooManyRelays);
+    // A station on the target's network hands it over, whatever its parameters say.
+    CHECK(p.map.find(a, 2, 3).relay.hops == std::vector<Station*>{&a});
+}
+
+TEST_CASE("network map: the extended station No. names stations 121-65534, 0000 the designated master", "[route]") {
+    Plant p;
+    auto& gw = p.add("gw", {on(1, 1)});
+    auto& node = p.add("node", {on(1, 300, true)});
+    auto& low = p.add("low", {on(1, 5)});
+    CHECK(p.map.find(gw, 1, 300, true).relay.target == &node);
+    CHECK(p.map.find(gw, 1, 0x0000, true).relay.target == &node);
+    CHECK(p.map.find(gw, 1, 0x7D).relay.target == &node);
+    CHECK(p.map.find(gw, 1, 5).relay.target == &low);
+    CHECK(p.map.find(gw, 1, 5, true).error == EndCode::RouteStationNotFound);        // 1-120: the station No. field
+    CHECK(p.map.find(gw, 1, 0x7D, true).error == EndCode::RouteStationNotFound);     // 125: no such station
+    CHECK(p.map.find(gw, 1, 0xFFFF, true).error == EndCode::RouteStationNotFound);   // own station only at 00
+    CHECK(p.map.find(gw, 1, 0x80).error == EndCode::RouteStationNotFound);           // station field past 78
 }
 
 TEST_CASE("network map: a module's port leaves another station's request undecoded, a built-in port refuses it", "[route]") {

@@ -79,13 +79,13 @@ json sample(const Setting& row) {
         {{Section::Timer, "device"}, "T0"}, {{Section::Timer, "points"}, 1}, {{Section::Timer, "preset"}, 1},
         {{Section::MultiCpu, "profile"}, "R08CPU"}, {{Section::CpuError, "code"}, "1900"},
         {{Section::Network, "send"}, json::array({"W0-W0F"})}, {{Section::Network, "device_sizes"}, {{"W", 8192}}}, {{Section::Drive, "passwords"}, {{"LINE.CSV", "secret1"}}},
-        {{Section::Drive, "dir"}, "/tmp"}, {{Section::Template, "count"}, 2},
+        {{Section::Drive, "dir"}, "/tmp"}, {{Section::Template, "count"}, 2}, {{Section::NodeSearch, "port"}, 45237},
         {{Section::Template, "template"}, {{"name", "s{i}"}, {"tcp_port", 0}}}};
     if (auto it = in_object.find({row.section, std::string(row.key)}); it != in_object.end()) return it->second;
     static const std::map<std::string, json> samples = {
         {"profile", "R04CPU"}, {"bind", "127.0.0.1"}, {"name", "press-1"}, {"ports", json::array()},
         {"device_sizes", {{"D", 2000}}}, {"devices", {{"D0", 1}}}, {"modules", json::array()},
-        {"networks", json::array()}, {"cpus", json::array()}, {"scenarios", json::array()},
+        {"networks", json::array()}, {"routes", json::array()}, {"node_search", {{"port", 45237}}}, {"cpus", json::array()}, {"scenarios", json::array()},
         {"http", json::object()}, {"cpu", json::object()}, {"labels", json::array()}, {"structures", json::array()},
         {"state_dir", "/tmp/slmp-settings-test"}, {"drives", json::object()}, {"timing", json::object()},
         {"stations", json::array({{{"name", "a"}}})}, {"password", "abcdef"},
@@ -175,6 +175,21 @@ json document(Section section, const std::string& key, const json& value) {
             json multidrop = {{"via", "line"}, {"start_io", "0040"}, {"number", 3}};
             multidrop[key] = value;
             return {{"multidrop", multidrop}};
+        }
+        case Section::Route: {   // leaves through network 1 (via_network: through the network it names)
+            json route = {{"network", 3}, {"via_network", 1}, {"via_station", 2}};
+            route[key] = value;
+            json networks = json::array({{{"number", 1}, {"station", 1}}});
+            if (key == "via_network" && value.is_number_unsigned() && value.get<std::uint64_t>() >= 1 &&
+                value.get<std::uint64_t>() <= 239 && value.get<std::uint64_t>() != 1)
+                networks.push_back({{"number", value}, {"station", 1}});
+            if (key == "network" && value == 1) route["network"] = 3;
+            return {{"networks", networks}, {"routes", json::array({route})}};
+        }
+        case Section::NodeSearch: {
+            json search = {{"port", 45237}};
+            search[key] = value;
+            return {{"node_search", search}};
         }
         case Section::Lockout: return {{"cpu", {{"password_lockout", {{key, value}}}}}};
         case Section::Timer:
@@ -298,7 +313,7 @@ TEST_CASE("a key's value outside its row's range is refused with the row's fix",
 TEST_CASE("an unknown key is refused naming the key and the keys it may be", "[settings]") {
     for (auto section : {Section::Station, Section::Port, Section::Http, Section::Cpu, Section::Program,
                          Section::TimerLimit, Section::Timing, Section::Module, Section::Network, Section::MultiCpu,
-                         Section::Redundant, Section::Multidrop,
+                         Section::Redundant, Section::Multidrop, Section::Route, Section::NodeSearch,
                          Section::Drive, Section::Label, Section::Structure, Section::Member, Section::Lockout,
                          Section::Timer, Section::Counter, Section::CpuError}) {
         auto doc = document(section, "no_such_key", 1);
@@ -323,6 +338,8 @@ TEST_CASE("a nested object's keys are its rows, in the order its error lists the
         {Section::MultiCpu, {"number", "profile", "device_sizes", "devices"}},
         {Section::Redundant, {"pair", "system", "switchover_ms"}},
         {Section::Multidrop, {"via", "start_io", "number"}},
+        {Section::Route, {"network", "via_network", "via_station"}},
+        {Section::NodeSearch, {"port", "max_delay_ms"}},
         {Section::Drive, {"dir", "capacity", "write_protect", "present", "passwords"}},
         {Section::Label, {"name", "type", "device", "dims", "external", "comment"}},
         {Section::Structure, {"name", "members", "comment"}},

@@ -30,7 +30,8 @@ const CommandSpec kCommands[] = {
     {"type", "", "0101 Read Type Name: model name and model code", {}, run_type},
     {"selftest", "[DATA]", "0619 Self Test: loopback of DATA (default 0123456789ABCDEF)", {}, run_selftest},
     {"nodes", "", "0E30 Node Search: the node's IP, MAC, station (host name), model code, status and port "
-                  "(an SLMP-compatible device's port; docs/nodes.md)", {}, run_nodes},
+                  "(an SLMP-compatible device's port; docs/nodes.md); --broadcast: every node answering a broadcast",
+     {"broadcast"}, run_nodes},
     {"status", "", "0E44 Status Read and 0E53 Status Read2: the node's status code and state", {}, run_status},
     {"lock", "PASSWORD", "1631 Remote Password Lock", {}, run_lock},
     {"unlock", "PASSWORD", "1630 Remote Password Unlock", {}, run_unlock},

@@ -100,6 +100,8 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         ("interval", po::value(&interval), "monitor: time between polls (default 1s)")
         ("count", po::value(&count), "monitor: stop after this many polls (default: until Ctrl-C)")
         ("wait", po::bool_switch(&o.wait), "ondemand: wait for Ondemand (2101) pushes and print each (--count N, default 1)")
+        ("broadcast", po::bool_switch(&o.broadcast), "nodes: send the node search as a UDP broadcast to --host:--port "
+                                                       "(e.g. 127.255.255.255) and list every node answering within --timeout")
         ("force", po::bool_switch(&o.force), "run/pause: mode 0003, even if another client holds STOP/PAUSE")
         ("clear", po::value(&o.clear), "run: clear devices first: none (default), nonlatch, all")
         ("file-password", po::value(&o.file_password), "file: the file's password (Q/L: up to 4 characters, iQ-R: 6-32)")

@@ -31,6 +31,7 @@ struct Options {
     std::chrono::milliseconds interval{1000};   // monitor
     std::optional<unsigned long> count;     // monitor: stop after N polls
     bool wait = false;                      // ondemand
+    bool broadcast = false;                 // nodes: a broadcast search, every answer listed
     bool force = false;                     // run, pause
     std::string clear = "none";             // run
     std::string file_password;              // file: the file's password (empty: none)
