@@ -48,6 +48,7 @@ void Station::pair_restarted(bool reset) {
 }
 
 void Station::pair_switched() {
+    if (!pair_) return;   // a station the map paired but that never joined (unit tests)
     pair_epoch_ = pair_->epoch();
     publish_pair_flags();
     touched();   // the program and the scan see the new role at the next scan
@@ -59,11 +60,12 @@ void Station::publish_pair_flags() {
 
 void Station::track_from(const RedundantPair::Image& image) {
     // Only an image of the epoch this CPU is the standby in (RedundantPair, "Epochs").
-    if (!image.image || image.epoch != pair_epoch_ || pair_->control_in(*this, pair_epoch_)) return;
+    if (!image.image || image.epoch != pair_epoch_ || pair_->control_in(*this, pair_epoch_) || !pair_->available(*this)) return;
     pair_->tracking().apply(*image.image, cpu_.memory());
 }
 
 void Station::pair_end_of_scan() {
+    if (!pair_->available(*this)) return;   // powered off: no tracking, no flags (the power-on writes them)
     const auto& error = cpu_.runtime().operating_state().error();
     const bool stop_error = error && error->stop;
     pair_->set_stop_error(*this, stop_error);

@@ -501,3 +501,27 @@ TEST_CASE("redundant pair: a RESET of the control system switches the systems (R
     check_flags(sim, gw, gw_udp, kToA, "1010", 0, 0, 1);
     check_flags(sim, gw, gw_udp, kToB, "0101", 0, 0, 0);
 }
+
+TEST_CASE("redundant pair: the program sees its CPU's role in SM1634/SM1635", "[route][plant][redundant][program]") {
+    TempDir dir;
+    // Y is each system's own I/O (not tracked): Y0 ON on the control system, Y1 on the standby.
+    const auto program = dir.write("role.il", "LD SM1634\nOUT Y0\nLD SM1635\nOUT Y1\nEND\n");
+    const auto cpu = R"(, "cpu": {"program": {"file": ")" + program.string() + R"("}})";
+    SimProcess sim(plant_options(R"({"bind": "127.0.0.1", "stations": [
+        {"name": "gw", "profile": "RJ71EN71", "tcp_port": 0, "networks": [{"number": 1, "station": 1}]},
+        {"name": "press-a", "profile": "R08PCPU", "tcp_port": 0, "networks": [{"number": 1, "station": 2}],
+         "redundant": {"pair": "press-b", "switchover_ms": 0})" + cpu + R"(},
+        {"name": "press-b", "profile": "R08PCPU", "tcp_port": 0, "networks": [{"number": 1, "station": 3}],
+         "redundant": {"pair": "press-a", "system": "B"})" + cpu + R"(}]})", {"--clock", "frozen"}));
+    auto gw = TcpClient::open(tcp_of(sim, "gw"));
+    const auto outputs = [&](const Route& r) { return show(ask(gw, client::read_bits(with(r), addr("Y0"), 2))); };
+    step(sim, "press-a");
+    step(sim, "press-b");
+    CHECK(outputs(kToA) == show(bits_answer(kToA, "10")));
+    CHECK(outputs(kToB) == show(bits_answer(kToB, "01")));
+    REQUIRE(http(sim.http_port(), "POST", "/api/stations/press-b/redundant/switch").status == 200);
+    step(sim, "press-a");
+    step(sim, "press-b");
+    CHECK(outputs(kToA) == show(bits_answer(kToA, "01")));
+    CHECK(outputs(kToB) == show(bits_answer(kToB, "10")));
+}

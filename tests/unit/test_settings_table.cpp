@@ -312,7 +312,7 @@ TEST_CASE("a nested object's keys are its rows, in the order its error lists the
         {Section::Module, {"start_io", "model", "buffer_words", "head_address"}},
         {Section::Network, {"number", "station", "master", "send", "device_sizes"}},
         {Section::MultiCpu, {"number", "profile", "device_sizes", "devices"}},
-        {Section::Redundant, {"pair", "system", "switchover_ms"}},
+        {Section::Redundant, {"pair", "system", "switchover_ms", "tracking"}},
         {Section::Multidrop, {"via", "start_io", "number"}},
         {Section::Drive, {"dir", "capacity", "write_protect", "present", "passwords"}},
         {Section::Label, {"name", "type", "device", "dims", "external", "comment"}},
