@@ -75,7 +75,7 @@ json sample(const Setting& row) {
         {{Section::Member, "name"}, "pos"}, {{Section::Member, "type"}, "Word [Signed]"},
         {{Section::Timer, "device"}, "T0"}, {{Section::Timer, "points"}, 1}, {{Section::Timer, "preset"}, 1},
         {{Section::MultiCpu, "profile"}, "R08CPU"}, {{Section::CpuError, "code"}, "1900"},
-        {{Section::Network, "send"}, json::array({"W0-W0F"})}, {{Section::Network, "device_sizes"}, {{"W", 8192}}}, {{Section::Drive, "passwords"}, {{"LINE.CSV", "secret1"}}},
+        {{Section::Network, "send"}, json::array({"W0-W0F"})}, {{Section::Redundant, "tracking"}, json::array({"D0-D99", "M"})}, {{Section::Network, "device_sizes"}, {{"W", 8192}}}, {{Section::Drive, "passwords"}, {{"LINE.CSV", "secret1"}}},
         {{Section::Drive, "dir"}, "/tmp"}};
     if (auto it = in_object.find({row.section, std::string(row.key)}); it != in_object.end()) return it->second;
     static const std::map<std::string, json> samples = {
