@@ -11,9 +11,39 @@ namespace {
 
 using devicemodel::Area;
 
-std::size_t words_of(const Tracking::Range& r) {
-    if (r.spec->unit == devicemodel::Unit::Bit) return r.count / 16;
-    return std::size_t{r.count} * devicemodel::words_per_device(*r.spec);
+bool bit_points(const devicemodel::DeviceSpec& spec) { return spec.unit == devicemodel::Unit::Bit; }
+
+std::span<const std::uint8_t> bits_of(const devicemodel::DeviceMemory& m, const devicemodel::DeviceSpec& spec) {
+    return spec.part == devicemodel::Part::Coil ? m.coil_plane(spec.area) : m.bit_plane(spec.area);
+}
+std::span<std::uint8_t> bits_of(devicemodel::DeviceMemory& m, const devicemodel::DeviceSpec& spec) {
+    return spec.part == devicemodel::Part::Coil ? m.coil_plane(spec.area) : m.bit_plane(spec.area);
+}
+
+// The range's points of a plane (cut to the plane: never past it).
+template <typename T>
+std::span<T> points(std::span<T> plane, const Tracking::Range& r) {
+    if (r.first >= plane.size()) return {};
+    return plane.subspan(r.first, std::min<std::size_t>(r.count, plane.size() - r.first));
+}
+
+// Copies the differing runs of `want` into `have`; the memory's observer hears each run.
+template <typename T>
+void write_differences(std::span<T> have, const std::vector<T>& want, const Tracking::Range& r,
+                       devicemodel::DeviceMemory& memory) {
+    const auto n = std::min(have.size(), want.size());
+    for (std::size_t at = 0; at < n;) {
+        if (have[at] == want[at]) {
+            ++at;
+            continue;
+        }
+        auto end = at + 1;
+        while (end < n && have[end] != want[end]) ++end;
+        std::copy(want.begin() + static_cast<std::ptrdiff_t>(at), want.begin() + static_cast<std::ptrdiff_t>(end),
+                  have.begin() + static_cast<std::ptrdiff_t>(at));
+        memory.notify(*r.spec, r.first + static_cast<std::uint32_t>(at), static_cast<std::uint32_t>(end - at));
+        at = end;
+    }
 }
 
 // Chosen default (docs/plants.md, "Tracking"): the devices a program keeps its
@@ -40,36 +70,25 @@ Tracking::Tracking(const std::optional<std::vector<Range>>& given, const devicem
 
 std::shared_ptr<const TrackingImage> Tracking::capture(const devicemodel::DeviceMemory& control) const {
     auto image = std::make_shared<TrackingImage>();
-    image->words.reserve(ranges_.size());
+    image->ranges.reserve(ranges_.size());
     for (const auto& r : ranges_) {
-        auto& words = image->words.emplace_back(words_of(r));
-        control.read_words(*r.spec, r.first, words);
+        auto& to = image->ranges.emplace_back();
+        if (bit_points(*r.spec)) {
+            const auto from = points(bits_of(control, *r.spec), r);
+            to.bits.assign(from.begin(), from.end());
+        } else {
+            const auto from = points(control.value_plane(r.spec->area), r);
+            to.values.assign(from.begin(), from.end());
+        }
     }
     return image;
 }
 
 void Tracking::apply(const TrackingImage& image, devicemodel::DeviceMemory& standby) const {
-    std::vector<std::uint16_t> now;
-    for (std::size_t i = 0; i < ranges_.size() && i < image.words.size(); ++i) {
+    for (std::size_t i = 0; i < ranges_.size() && i < image.ranges.size(); ++i) {
         const auto& r = ranges_[i];
-        const auto& want = image.words[i];
-        now.resize(want.size());
-        standby.read_words(*r.spec, r.first, now);
-        const bool bits = r.spec->unit == devicemodel::Unit::Bit;
-        const auto per = bits ? 1u : devicemodel::words_per_device(*r.spec);
-        // Runs of differing devices (a double-word device is its two words together).
-        for (std::size_t at = 0; at < want.size();) {
-            if (std::equal(want.begin() + at, want.begin() + at + per, now.begin() + at)) {
-                at += per;
-                continue;
-            }
-            auto end = at + per;
-            while (end < want.size() && !std::equal(want.begin() + end, want.begin() + end + per, now.begin() + end)) end += per;
-            const auto device = static_cast<std::uint32_t>(bits ? at * 16 : at / per);
-            standby.write_words(*r.spec, r.first + device,
-                                std::span<const std::uint16_t>(want.data() + at, end - at));
-            at = end;
-        }
+        if (bit_points(*r.spec)) write_differences(points(bits_of(standby, *r.spec), r), image.ranges[i].bits, r, standby);
+        else write_differences(points(standby.value_plane(r.spec->area), r), image.ranges[i].values, r, standby);
     }
 }
 

@@ -21,9 +21,15 @@
 
 namespace slmp::station {
 
-// The tracked devices at one END of the control system.
+// The tracked devices at one END of the control system: per tracked range,
+// its points as the memory's planes hold them (a byte a bit point, a 32-bit
+// value a word, double word or current value), copied whole.
 struct TrackingImage {
-    std::vector<std::vector<std::uint16_t>> words;   // one per tracked range, as read_words gives them
+    struct Points {
+        std::vector<std::uint8_t> bits;       // bit devices, contacts, coils
+        std::vector<std::uint32_t> values;    // everything else
+    };
+    std::vector<Points> ranges;
 };
 
 class Tracking {
@@ -37,8 +43,8 @@ public:
 
     const std::vector<Range>& ranges() const { return ranges_; }
     std::shared_ptr<const TrackingImage> capture(const devicemodel::DeviceMemory& control) const;
-    // Writes the image's words that differ from the standby's (its write
-    // observers hear those only).
+    // Writes the image's points that differ from the standby's, straight into
+    // its planes (its write observers hear those runs only).
     void apply(const TrackingImage& image, devicemodel::DeviceMemory& standby) const;
 
 private:
