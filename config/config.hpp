@@ -106,10 +106,19 @@ struct ModuleConfig {
 // partner station's name and this CPU's system (A or B). System A is the
 // control system at start; a system switch takes `switchover_ms` on the new
 // control system's clock (given on either CPU, or the same on both; default 100).
+// `tracking`: the device ranges the control system copies to the standby at
+// each END (docs/plants.md, "Tracking"); empty: the default ranges.
 struct RedundantConfig {
     std::string pair;
     char system = 'A';
     std::optional<double> switchover_ms;
+    struct Range {
+        const devicemodel::DeviceSpec* spec = nullptr;
+        std::uint32_t first = 0;
+        std::uint32_t count = 0;   // bit devices: a multiple of 16
+        bool operator==(const Range&) const = default;
+    };
+    std::optional<std::vector<Range>> tracking;
 };
 
 // A multidrop station (docs/plants.md, "Multidrop stations"): behind the

@@ -109,6 +109,36 @@ CpuConfig cpu(const JsonAt& at) {
     return c;
 }
 
+// One tracked range of a redundant pair, "D0-D999", "M0-M1023", "TN0-TN63" or a
+// whole device, "W" (docs/plants.md, "Tracking"): bit devices in whole words.
+RedundantConfig::Range tracking_range(const JsonAt& at) {
+    const auto text = at.string();
+    const std::string example = "write it like \"D0-D999\", \"M0-M1023\" or \"W\" (all of W)";
+    std::string error;
+    const bool whole = text.find_first_of("0123456789") == std::string::npos;
+    if (whole) {
+        const auto* spec = devicemodel::find_by_symbol(text);
+        if (!spec) at.fail("'" + text + "' is no device", example);
+        RedundantConfig::Range r{spec, 0, ~std::uint32_t{0}};
+        if (spec->area == Area::SM || spec->area == Area::SD)
+            at.fail("SM and SD are each CPU's own; a pair does not track them", "remove '" + text + "'");
+        return r;
+    }
+    const auto dash = text.find('-');
+    auto first = devicemodel::parse_address(text.substr(0, dash), &error);
+    auto last = dash == std::string::npos ? first : devicemodel::parse_address(text.substr(dash + 1), &error);
+    if (!first || !last || first->spec != last->spec || last->number < first->number)
+        at.fail("'" + text + "' is not a range of devices", example);
+    const auto area = first->spec->area;
+    if (area == Area::SM || area == Area::SD)
+        at.fail("SM and SD are each CPU's own; a pair does not track them", "remove '" + text + "'");
+    RedundantConfig::Range r{first->spec, first->number, last->number - first->number + 1};
+    if (first->spec->unit == devicemodel::Unit::Bit && (r.first % 16 != 0 || r.count % 16 != 0))
+        at.fail("'" + text + "' is not whole words of " + std::string(first->spec->symbol),
+                "start at a multiple of 16 and track 16 points a word, e.g. \"M0-M1023\"");
+    return r;
+}
+
 // "redundant": {"pair": "press-b", "system": "A", "switchover_ms": 100} (docs/plants.md, "Redundant pairs").
 RedundantConfig redundant(const JsonAt& at) {
     check_keys(at, Section::Redundant);
@@ -117,6 +147,12 @@ RedundantConfig redundant(const JsonAt& at) {
     if (r.pair.empty()) at["pair"].fail("the pair needs the other station's name", "write \"pair\": \"press-b\"");
     if (at.has("system")) r.system = choice_setting(at, Section::Redundant, "system")[0];
     if (at.has("switchover_ms")) r.switchover_ms = number_setting(at, Section::Redundant, "switchover_ms");
+    if (at.has("tracking")) {
+        auto list = at["tracking"];
+        list.expect_array();
+        r.tracking.emplace();
+        for (std::size_t i = 0; i < list.json().size(); ++i) r.tracking->push_back(tracking_range(list[i]));
+    }
     return r;
 }
 

@@ -220,6 +220,9 @@ private:
             if (o && o->switchover_ms && r->switchover_ms && *o->switchover_ms != *r->switchover_ms)
                 throw ConfigError(where(name) + ": /redundant/switchover_ms: '" + name + "' and '" + r->pair +
                                   "' give different switch times; give it once, or the same on both");
+            if (o && o->tracking && r->tracking && *o->tracking != *r->tracking)
+                throw ConfigError(where(name) + ": /redundant/tracking: '" + name + "' and '" + r->pair +
+                                  "' track different ranges; give them once, or the same on both");
             for (const auto& t : stations_)   // a third station naming either as its partner
                 if (&t != &s && &t != other->second && t.server.redundant &&
                     (t.server.redundant->pair == name || t.server.redundant->pair == r->pair))

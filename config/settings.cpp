@@ -202,6 +202,11 @@ constexpr Setting kSettings[] = {
     {.section = S::Redundant, .key = "switchover_ms", .flag = "", .type = T::Number, .max = 60000,
      .default_text = "100", .help = "how long a system switch takes (requests by role answer 4248 meanwhile)",
      .fix = "use 0 to 60000 ms (default 100)"},
+    {.section = S::Redundant, .key = "tracking", .flag = "", .type = T::Array,
+     .default_text = "M, L, B, D, W and the timers' and counters' current values, whole",
+     .help = "the device ranges the control system copies to the standby at each END, e.g. "
+             "`[\"D0-D999\", \"M0-M1023\", \"TN\"]` (bit devices in whole words; given on one CPU or the same on "
+             "both) ([plants.md](plants.md#tracking))"},
     {.section = S::Multidrop, .key = "via", .flag = "", .type = T::String, .default_text = "required",
      .help = "the station whose serial module it hangs on", .required = true},
     {.section = S::Multidrop, .key = "start_io", .flag = "", .type = T::String, .default_text = "required",

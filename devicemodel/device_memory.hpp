@@ -101,6 +101,9 @@ public:
     std::span<std::uint8_t> bit_plane(Area area) { return store(area).bits; }
     std::span<std::uint8_t> coil_plane(Area area) { return store(area).coils; }
     std::span<std::uint32_t> value_plane(Area area) { return store(area).values; }
+    std::span<const std::uint8_t> bit_plane(Area area) const { return store(area).bits; }
+    std::span<const std::uint8_t> coil_plane(Area area) const { return store(area).coils; }
+    std::span<const std::uint32_t> value_plane(Area area) const { return store(area).values; }
     bool observed() const { return observer_ != nullptr; }
     void notify(const DeviceSpec& spec, std::uint32_t first, std::uint32_t count) {
         if (observer_) observer_->written(spec, first, count);

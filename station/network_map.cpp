@@ -148,8 +148,11 @@ void NetworkMap::link() {
         auto ms = config.switchover_ms;
         if (!ms && other != redundant_.end()) ms = other->second.switchover_ms;
         const auto switchover = std::chrono::milliseconds(static_cast<long long>(ms.value_or(100)));
+        // Either CPU may give the tracked ranges too (the plant's check made them agree).
+        auto tracking = config.tracking;
+        if (!tracking && other != redundant_.end()) tracking = other->second.tracking;
         pairs_.push_back(std::make_unique<RedundantPair>(*first, a ? self.name : config.pair, *second,
-                                                         a ? config.pair : self.name, switchover));
+                                                         a ? config.pair : self.name, switchover, tracking));
         pair_of_[first] = pair_of_[second] = pairs_.back().get();
     }
     for (const auto& [self, config] : multidrop_) {

@@ -171,6 +171,7 @@ void ScanLoop::scan_once(VirtualClock::TimePoint at) {
     if (program_) program_->end_of_scan(std::chrono::duration_cast<std::chrono::microseconds>(at - last_end_));
     ended(at, 1);
     for (const auto& callback : after_scan_) callback(at);
+    for (const auto& callback : at_end_) callback();
     if (!waiters_->empty()) wake_waiters();
 }
 
@@ -179,6 +180,7 @@ void ScanLoop::scan_repeated(VirtualClock::TimePoint at, std::uint64_t count) {
     auto calendar = local_calendar(clock_.calendar_at(at));
     for (auto* cpu : cpus_) cpu->runtime().scan_repeated(cpu->memory(), at, calendar, per_us, count);
     ended(at, count);
+    for (const auto& callback : at_end_) callback();
     if (!waiters_->empty()) wake_waiters();
 }
 

@@ -71,6 +71,9 @@ public:
     void after_scan(std::function<void(std::chrono::steady_clock::time_point)> callback) {
         after_scan_.push_back(std::move(callback));
     }
+    // Called at every END, the repeated scans' last one too (after the
+    // after_scan callbacks): a redundant pair's tracking and flags.
+    void at_end(std::function<void()> callback) { at_end_.push_back(std::move(callback)); }
     // CPU No.1's program: executed in every scan before END processing, its
     // timers given the scan's time after it (null: none; docs/program.md).
     void run_program(CpuProgram* program) { program_ = program; }
@@ -144,6 +147,7 @@ private:
     // destroyed after the loop (at shutdown).
     std::shared_ptr<Waiters> waiters_ = std::make_shared<Waiters>();
     std::vector<std::function<void(std::chrono::steady_clock::time_point)>> after_scan_;
+    std::vector<std::function<void()>> at_end_;
     CpuProgram* program_ = nullptr;
 };
 

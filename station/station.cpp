@@ -199,7 +199,10 @@ Handled Station::handle(Ticket& ticket, protocol::Session& session, const protoc
 void Station::join(const NetworkMap& networks) {
     network_map_ = &networks;
     engine_.set_identity(networks.identity(*this));
+    pair_ = networks.pair_of(*this);
+    if (pair_) publish_pair_flags();
     if (!scan_) return;
+    if (pair_) scan_->at_end([this] { pair_end_of_scan(); });
     auto link = std::make_unique<LinkScan>(*this, networks, config_.networks);
     if (link->empty()) return;
     link_scan_ = std::move(link);
@@ -256,23 +259,6 @@ std::optional<Handled> Station::route(protocol::Request& request, std::span<cons
     log_->debug("request {:04X}/{:04X} for network {:02X} station {:02X} module I/O {:04X} multidrop {:02X}: passed on",
                 request.command, request.subcommand, route.network, route.station, route.module_io, route.multidrop);
     return relayed;
-}
-
-std::string Station::system_switch(const std::string& why) {
-    auto* pair = network_map_ ? network_map_->pair_of(*this) : nullptr;
-    if (!pair) return "this station is no CPU of a redundant pair";
-    return pair->switch_over(why);
-}
-
-void Station::powered(bool on) {
-    auto* pair = network_map_ ? network_map_->pair_of(*this) : nullptr;
-    if (!pair) return;
-    pair->set_available(*this, on);
-    // The control system's power cut switches the systems (automatic system switching).
-    if (!on && pair->is_control(*this)) {
-        auto why = pair->switch_over("power cut at the control system");
-        if (!why.empty()) log_->warn("redundant pair: no system switch: {}", why);
-    }
 }
 
 // Proxy mode (docs/twin.md, "Proxy"): the frame goes on as it came. A frame
@@ -494,6 +480,7 @@ Handled Station::serve(protocol::Request request, std::span<const std::uint8_t> 
 // the real station every TCP connection drops and UDP sessions start afresh.
 void Station::restart() {
     log_->info("Remote RESET: CPU restarted; closing every connection");
+    pair_restarted(true);
     std::vector<std::uint64_t> ids;
     for (const auto& [id, _] : activity_.connections()) ids.push_back(id);
     for (auto id : ids) activity_.close(id, "Remote RESET: the CPU restarted");

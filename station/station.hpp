@@ -24,6 +24,7 @@
 #include "protocol/engine.hpp"
 #include "protocol/peer.hpp"
 #include "station/activity.hpp"
+#include "station/redundant_pair.hpp"
 #include "station/scenario_hook.hpp"
 #include "station/station_log.hpp"
 #include "station/transports.hpp"
@@ -133,8 +134,13 @@ public:
     // A scenario's power cut and return: the pair's CPU is down or up again; the
     // control system's power cut switches the systems.
     void powered(bool on);
+    // A redundant pair switched (RedundantPair::switch_over posts it to both
+    // CPUs' strands): this CPU acts in the new epoch and shows its new role in
+    // its SM/SD (station_redundancy.cpp).
+    void pair_switched();
     // Its home strand (a bare station has none: no relays reach it).
     const Home& home() const { return *home_; }
+    bool has_home() const { return home_.has_value(); }
     // A request a route brought here (Relays::pass_on), on this station's
     // strand: served in this station's timing mode with `session`, this
     // connection's session here (made on first use: routed, without the
@@ -293,6 +299,16 @@ private:
 
     config::ServerConfig config_;   // with the scenarios' initial state joined
     std::optional<Home> home_;      // null in a bare station
+    // A redundant pair's CPU (station_redundancy.cpp): at every END the
+    // control system tracks its devices to the standby and switches on a stop
+    // error; each CPU publishes the pair's SM/SD.
+    RedundantPair* pair_ = nullptr;
+    std::uint64_t pair_epoch_ = 0;      // the switches this CPU has heard of (RedundantPair, "Epochs")
+    bool stop_error_switched_ = false;   // this stop error has asked for its switch already (logged once)
+    void pair_end_of_scan();
+    void publish_pair_flags();
+    void track_from(const RedundantPair::Image& image);
+    void pair_restarted(bool reset);   // a RESET or power-on: registers afresh; the control system's RESET switches
     const NetworkMap* network_map_ = nullptr;
     std::unique_ptr<LinkScan> link_scan_;                // null: sends no link devices
     protocol::Session passing_;                          // the scenario faults' view of requests it passes on

@@ -194,6 +194,8 @@ void Station::restore(const StationSnapshot& s, bool drop_connections) {
     // The scenarios first: stopping one ends its power cut, which restarts sessions.
     if (s.has_scenarios) scenario_.replace_scenarios(s.scenarios);
     for (std::size_t i = 0; i < s.cpus.size(); ++i) give_back(s.cpus[i], *cpus[i], "CPU No." + std::to_string(i + 1));
+    // A redundant pair's roles are the plant's, not the snapshot's: its SM/SD show them now.
+    if (pair_) publish_pair_flags();
     if (scan_ && s.has_clock) scan_->set_time(s.clock);
     if (drop_connections) {
         std::vector<std::uint64_t> ids;

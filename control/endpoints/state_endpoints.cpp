@@ -1,7 +1,9 @@
 // GET /api/state — the operating state (RUN/STOP/PAUSE), why, the RUN/STOP
 // switch, a remote STOP/PAUSE hold and a simulated CPU error.
 // PUT /api/state {"switch": "RUN"|"STOP"} — moves the CPU's RUN/STOP switch, as
-// a person at the PLC would. Remote RUN/STOP/PAUSE stay SLMP operations
+// a person at the PLC would; {"error": {"code": "3100", "stop": true}} raises a
+// CPU error (as a scenario's "error" action); {"reset": true} is the RESET
+// switch (docs/api.md, "Operating state"). Remote RUN/STOP/PAUSE stay SLMP operations
 // (1001/1002/1003), which hold the state for the client that sent them.
 // Behaviour of the state machine: docs/cpu-runtime.md.
 #include "control/endpoints/api.hpp"
@@ -53,20 +55,53 @@ json state_json(const devicemodel::Runtime& runtime) {
     return out;
 }
 
+// {"code": "3100", "stop": true}: the error a scenario's "error" action raises.
+std::optional<devicemodel::CpuError> error_of(const json& body) {
+    const auto& e = body["error"];
+    if (!e.is_object() || !e.contains("code") || !e["code"].is_string() || e["code"].get<std::string>().size() != 4 ||
+        e["code"].get<std::string>().find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
+        return std::nullopt;
+    for (const auto& [key, _] : e.items())
+        if (key != "code" && key != "stop") return std::nullopt;
+    if (e.contains("stop") && !e["stop"].is_boolean()) return std::nullopt;
+    devicemodel::CpuError error;
+    error.code = static_cast<std::uint16_t>(std::stoul(e["code"].get<std::string>(), nullptr, 16));
+    error.stop = e.value("stop", false);
+    return error;
+}
+
 Reply put_state(Api& api, const ApiRequest& request) {
     auto body = json::parse(request.body, nullptr, false);
-    if (body.is_discarded() || !body.is_object())
-        return error_reply(Status::bad_request, "the body must be a JSON object such as {\"switch\": \"STOP\"}");
+    const std::string example = "{\"switch\": \"STOP\"}, {\"error\": {\"code\": \"3100\", \"stop\": true}} or {\"reset\": true}";
+    if (body.is_discarded() || !body.is_object() || body.empty())
+        return error_reply(Status::bad_request, "the body must be a JSON object such as " + example);
     for (const auto& [key, _] : body.items())
-        if (key != "switch")
-            return error_reply(Status::bad_request, "unknown key \"" + key + "\" in the body; use \"switch\" (remote "
-                                                    "RUN/STOP/PAUSE are SLMP commands 1001/1002/1003)");
-    const auto& position = body.contains("switch") ? body["switch"] : json();
-    if (!position.is_string() || (position != "RUN" && position != "STOP"))
-        return error_reply(Status::bad_request, "\"switch\" must be \"RUN\" or \"STOP\"");
+        if (key != "switch" && key != "error" && key != "reset")
+            return error_reply(Status::bad_request, "unknown key \"" + key + "\" in the body; use \"switch\", \"error\" or "
+                                                    "\"reset\" (remote RUN/STOP/PAUSE/RESET are SLMP commands 1001/1002/1003/1006)");
+    std::optional<RunSwitch> position;
+    if (body.contains("switch")) {
+        const auto& p = body["switch"];
+        if (!p.is_string() || (p != "RUN" && p != "STOP")) return error_reply(Status::bad_request, "\"switch\" must be \"RUN\" or \"STOP\"");
+        position = p == "RUN" ? RunSwitch::Run : RunSwitch::Stop;
+    }
+    std::optional<devicemodel::CpuError> error;
+    if (body.contains("error") && !(error = error_of(body)))
+        return error_reply(Status::bad_request, "\"error\" must be like {\"code\": \"3100\", \"stop\": true} (4 hex digits; stop "
+                                                "true: a stop error, false: a continuation error)");
+    const bool reset = body.contains("reset");
+    if (reset && body["reset"] != true) return error_reply(Status::bad_request, "\"reset\": true is the only value");
     auto& cpu = api.station.cpu();
     api.events.flush_writes("internal");
-    cpu.runtime().set_switch(cpu.memory(), position == "RUN" ? RunSwitch::Run : RunSwitch::Stop);
+    // In the order a person at the CPU would: the switch, then the error, then RESET.
+    if (position) cpu.runtime().set_switch(cpu.memory(), *position);
+    if (error) cpu.runtime().raise_error(cpu.memory(), *error);
+    if (reset) {
+        // The RESET switch: the CPU restarts whatever the "remote reset" parameter says
+        // (that one is for Remote RESET 1006); every connection drops, as there.
+        cpu.runtime().restart(cpu.memory());
+        api.station.restart();
+    }
     api.events.flush_writes("api");   // SD203 and friends
     return json_reply(state_json(cpu.runtime()));
 }

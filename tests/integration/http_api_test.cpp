@@ -302,6 +302,30 @@ TEST_CASE("HTTP API: the operating state and the RUN/STOP switch", "[http][state
     CHECK(http_put(port, "/api/state", R"({"switch": "RUN"})").json()["state"] == "RUN");
     expect_error(http_put(port, "/api/state", R"({"switch": "PAUSE"})"), 400, "\"switch\" must be \"RUN\" or \"STOP\"");
     expect_error(http_put(port, "/api/state", R"({"state": "STOP"})"), 400,
-                 "unknown key \"state\" in the body; use \"switch\" (remote RUN/STOP/PAUSE are SLMP commands 1001/1002/1003)");
-    expect_error(http_put(port, "/api/state", "STOP"), 400, "the body must be a JSON object such as {\"switch\": \"STOP\"}");
+                 "unknown key \"state\" in the body; use \"switch\", \"error\" or \"reset\" (remote RUN/STOP/PAUSE/RESET are "
+                 "SLMP commands 1001/1002/1003/1006)");
+    const std::string example = "{\"switch\": \"STOP\"}, {\"error\": {\"code\": \"3100\", \"stop\": true}} or {\"reset\": true}";
+    expect_error(http_put(port, "/api/state", "STOP"), 400, "the body must be a JSON object such as " + example);
+    expect_error(http_put(port, "/api/state", "{}"), 400, "the body must be a JSON object such as " + example);
+
+    // A CPU error, as a scenario's "error" action raises it; then the RESET switch clears it.
+    const std::string bad_error = "\"error\" must be like {\"code\": \"3100\", \"stop\": true} (4 hex digits; stop true: a "
+                                  "stop error, false: a continuation error)";
+    for (const char* body : {R"({"error": {"code": "31"}})", R"({"error": {"code": 3100}})", R"({"error": {"code": "31G0"}})",
+                             R"({"error": {"code": "3100", "stop": 1}})", R"({"error": {"code": "3100", "x": true}})"})
+        expect_error(http_put(port, "/api/state", body), 400, bad_error);
+    expect_error(http_put(port, "/api/state", R"({"reset": false})"), 400, "\"reset\": true is the only value");
+    auto raised = http_put(port, "/api/state", R"({"error": {"code": "3100", "stop": true}})");
+    CHECK(raised.status == 200);
+    CHECK(raised.json() == json{{"state", "STOP"}, {"switch", "RUN"}, {"cause", "error"}, {"remote_hold", nullptr},
+                                {"error", {{"code", "3100"}, {"stop", true}}}});
+    auto sd0 = link.exchange(client::read_words(w.options(), addr("SD0"), 1));
+    REQUIRE(sd0.size() == 13);
+    CHECK(sd0[11] == 0x00);
+    CHECK(sd0[12] == 0x31);
+    // RESET: the CPU restarts (the error is gone, RUN from the switch) and the SLMP connection closes.
+    auto reset = http_put(port, "/api/state", R"({"reset": true})");
+    CHECK(reset.status == 200);
+    CHECK(reset.json() == json{{"state", "RUN"}, {"switch", "RUN"}, {"cause", nullptr}, {"remote_hold", nullptr}, {"error", nullptr}});
+    CHECK(link.client().wait_closed(std::chrono::seconds(10)));
 }

@@ -193,14 +193,14 @@ TEST_CASE("network map: a redundant pair's 03D0-03D3, its system switch, multidr
     // A file command by role is left to the CPU (which answers 4B02).
     CHECK(through(3, 0x03D0, 0, true).relay.target == &b);
 
-    CHECK(redundant->switch_over("test").empty());
+    CHECK(redundant->switch_over("test", slmp::devicemodel::SwitchCause::Request).empty());
     CHECK(&redundant->control() == &b);
     CHECK_FALSE(redundant->switching());
     CHECK(through(2, 0x03D0).relay.target == &b);
     CHECK(through(2, 0x03D1).relay.target == &a);
     // The standby down: no switch; a route to it by role 4245.
     redundant->set_available(a, false);
-    CHECK(redundant->switch_over("test") == "the standby system (press-a) is down");
+    CHECK(redundant->switch_over("test", slmp::devicemodel::SwitchCause::Request) == "the standby system (press-a) is down");
     CHECK(through(3, 0x03D1).error == EndCode::OtherSystemError);
 
     // Multidrop station 3 behind line's serial module at 0040 (route module I/O 0004).

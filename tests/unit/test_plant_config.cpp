@@ -164,4 +164,32 @@ TEST_CASE("redundant pairs and multidrop stations name stations of the plant", "
                       Catch::Contains("/multidrop/number"));
     CHECK_THROWS_WITH(plant(R"({"stations": [{"name": "d", "multidrop": {"via": "x", "start_io": "2000", "number": 1}}]})"),
                       Catch::Contains("at most 1FF0"));
+
+}
+
+TEST_CASE("a redundant pair's tracked ranges", "[plant][redundant][tracking]") {
+    auto p = plant(R"({"stations": [{"name": "a", "tcp_port": 1, "redundant": {"pair": "b", "tracking": ["D0-D99", "M16-M47", "TN"]}},
+        {"name": "b", "tcp_port": 2, "redundant": {"pair": "a", "system": "B"}}]})");
+    const auto& tracking = p.stations[0].server.redundant->tracking;
+    REQUIRE(tracking);
+    REQUIRE(tracking->size() == 3);
+    CHECK((*tracking)[0].spec->symbol == "D");
+    CHECK((*tracking)[0].count == 100);
+    CHECK((*tracking)[1].first == 16);
+    CHECK((*tracking)[1].count == 32);
+    CHECK((*tracking)[2].spec->symbol == "TN");
+    CHECK_FALSE(p.stations[1].server.redundant->tracking);   // the pair takes a's
+
+    const auto with = [](const std::string& tracking) {
+        return plant(R"({"stations": [{"name": "a", "redundant": {"pair": "b", "tracking": )" + tracking + "}}]}");
+    };
+    CHECK_THROWS_WITH(with(R"(["M3-M10"])"), Catch::Contains("is not whole words of M"));
+    CHECK_THROWS_WITH(with(R"(["SD0-SD9"])"), Catch::Contains("SM and SD are each CPU's own"));
+    CHECK_THROWS_WITH(with(R"(["SM"])"), Catch::Contains("SM and SD are each CPU's own"));
+    CHECK_THROWS_WITH(with(R"(["D9-D0"])"), Catch::Contains("is not a range of devices"));
+    CHECK_THROWS_WITH(with(R"(["Q"])"), Catch::Contains("is no device"));
+    CHECK_THROWS_WITH(with(R"("D0-D9")"), Catch::Contains("/redundant/tracking"));
+    CHECK_THROWS_WITH(plant(R"({"stations": [{"name": "a", "tcp_port": 1, "redundant": {"pair": "b", "tracking": ["D0-D9"]}},
+        {"name": "b", "tcp_port": 2, "redundant": {"pair": "a", "system": "B", "tracking": ["D0-D19"]}}]})"),
+                      Catch::Contains("track different ranges"));
 }

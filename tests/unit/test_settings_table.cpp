@@ -78,7 +78,7 @@ json sample(const Setting& row) {
         {{Section::Member, "name"}, "pos"}, {{Section::Member, "type"}, "Word [Signed]"},
         {{Section::Timer, "device"}, "T0"}, {{Section::Timer, "points"}, 1}, {{Section::Timer, "preset"}, 1},
         {{Section::MultiCpu, "profile"}, "R08CPU"}, {{Section::CpuError, "code"}, "1900"},
-        {{Section::Network, "send"}, json::array({"W0-W0F"})}, {{Section::Network, "device_sizes"}, {{"W", 8192}}}, {{Section::Drive, "passwords"}, {{"LINE.CSV", "secret1"}}},
+        {{Section::Network, "send"}, json::array({"W0-W0F"})}, {{Section::Redundant, "tracking"}, json::array({"D0-D99", "M"})}, {{Section::Network, "device_sizes"}, {{"W", 8192}}}, {{Section::Drive, "passwords"}, {{"LINE.CSV", "secret1"}}},
         {{Section::Drive, "dir"}, "/tmp"}, {{Section::Template, "count"}, 2}, {{Section::NodeSearch, "port"}, 45237},
         {{Section::Template, "template"}, {{"name", "s{i}"}, {"tcp_port", 0}}}};
     if (auto it = in_object.find({row.section, std::string(row.key)}); it != in_object.end()) return it->second;
@@ -336,7 +336,7 @@ TEST_CASE("a nested object's keys are its rows, in the order its error lists the
         {Section::Module, {"start_io", "model", "buffer_words", "head_address"}},
         {Section::Network, {"number", "station", "master", "send", "device_sizes"}},
         {Section::MultiCpu, {"number", "profile", "device_sizes", "devices"}},
-        {Section::Redundant, {"pair", "system", "switchover_ms"}},
+        {Section::Redundant, {"pair", "system", "switchover_ms", "tracking"}},
         {Section::Multidrop, {"via", "start_io", "number"}},
         {Section::Route, {"network", "via_network", "via_station"}},
         {Section::NodeSearch, {"port", "max_delay_ms"}},
