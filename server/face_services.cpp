@@ -159,7 +159,8 @@ private:
 void FaceServices::after(std::chrono::milliseconds timer, std::function<bool()> wanted, std::function<void()> then) {
     auto wait = [](station::Station& station, std::chrono::milliseconds timer, std::function<bool()> wanted,
                    std::function<void()> then, std::shared_ptr<bool> stopped) -> station::StrandTask<> {
-        co_await station.wait_on_clock(timer, [&] { return !*stopped && wanted(); });
+        std::function<bool()> still_wanted = [&] { return !*stopped && wanted(); };   // named: see Relays::pass_on
+        co_await station.wait_on_clock(timer, std::move(still_wanted));
         if (!*stopped && wanted()) then();
     };
     if (*stopped_) return;

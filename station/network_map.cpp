@@ -309,7 +309,11 @@ StrandTask<Handled> Relays::pass_on(Relay relay, std::vector<std::uint8_t> frame
                    });
     auto out_of_time = [](Station& port, std::chrono::microseconds left,
                           std::shared_ptr<const std::atomic<bool>> answered) -> StrandTask<bool> {
-        co_await asio::co_spawn(port.home(), port.wait_on_clock(left, [answered] { return !*answered; }), use_strand);
+        // Named, not a temporary in the co_await expression: GCC 12 destroys
+        // such a temporary twice, and the shared_ptr it holds with it.
+        std::function<bool()> wanted = [answered] { return !*answered; };
+        auto wait = port.wait_on_clock(left, std::move(wanted));
+        co_await asio::co_spawn(port.home(), std::move(wait), use_strand);
         co_return !*answered;
     };
     const auto left = std::max(std::chrono::microseconds{0}, std::chrono::microseconds(timer) - spent);

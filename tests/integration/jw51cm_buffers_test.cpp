@@ -26,13 +26,7 @@ constexpr const char* kConfig = R"({"kind": "sharp-jw", "jw51cm": {"tcp_port": 0
     "1410": "00 08 00 01 0C 00 04 80",
     "1420": "00 09 00 81 10 00 01 80"}}})";
 
-SimOptions buffered() {
-    SimOptions options;
-    options.tcp_ports = 0;
-    options.udp_ports = 0;
-    options.config_json = kConfig;
-    return options;
-}
+SimOptions buffered() { return jw51cm::jw_station(kConfig); }
 
 using jw51cm::ask;
 using jw51cm::jw_tcp;

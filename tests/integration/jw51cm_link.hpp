@@ -12,6 +12,15 @@
 
 namespace slmp::test::jw51cm {
 
+// A JW-51CM-only simulator (no SLMP ports) with this configuration.
+inline SimOptions jw_station(const char* config_json) {
+    SimOptions options;
+    options.tcp_ports = 0;
+    options.udp_ports = 0;
+    options.config_json = config_json;
+    return options;
+}
+
 inline std::uint16_t jw_tcp(const SimProcess& sim) { return sim.ready().at("jw51cm").at("tcp").at(0).get<std::uint16_t>(); }
 inline std::uint16_t jw_udp(const SimProcess& sim) { return sim.ready().at("jw51cm").at("udp").at(0).get<std::uint16_t>(); }
 

@@ -31,13 +31,7 @@ constexpr const char* kConfig = R"({"kind": "sharp-jw", "jw51cm": {"tcp_port": 0
     "3660": "00 0A 00 00 20 00 00 80",
     "3764": "FE 09 00 80"}}})";
 
-SimOptions reporting() {
-    SimOptions options;
-    options.tcp_ports = 0;
-    options.udp_ports = 0;
-    options.config_json = kConfig;
-    return options;
-}
+SimOptions reporting() { return jw51cm::jw_station(kConfig); }
 
 // `count` bytes of data memory from D`word`, low byte first.
 Bytes data_memory(std::uint16_t http, unsigned word, unsigned words) {

@@ -21,12 +21,8 @@ using jw51cm::request;
 using jw51cm::response;
 
 SimOptions sharp_jw() {
-    SimOptions options;
-    options.tcp_ports = 0;
-    options.udp_ports = 0;
-    options.config_json = R"({"kind": "sharp-jw", "jw51cm": {"tcp_port": 0, "udp_port": 0,
-                              "timer_attributes": {"0000": "0008", "0001": "000A"}}})";
-    return options;
+    return jw51cm::jw_station(R"({"kind": "sharp-jw", "jw51cm": {"tcp_port": 0, "udp_port": 0,
+                              "timer_attributes": {"0000": "0008", "0001": "000A"}}})");
 }
 
 using jw51cm::ask;

@@ -69,6 +69,7 @@ json minimal_document(Section section) {
         case Section::Timing: return {{"timing", json::object()}};
         case Section::Module: return {{"modules", json::array({{{"start_io", "0030"}, {"buffer_words", 16}}})}};
         case Section::Redundant: return {{"redundant", {{"pair", "press-b"}}}};
+        case Section::NodeSearch: return {{"node_search", {{"port", 45237}}}};
         case Section::Label: return {{"labels", json::array({{{"name", "Speed"}, {"type", "Word [Signed]"}}})}};
         case Section::MultiCpu: return {{"cpus", json::array({{{"number", 2}, {"profile", "R08CPU"}}})}};
         default: FAIL("no minimal document for section " << config::section_name(section)); return nullptr;
@@ -113,6 +114,7 @@ const std::map<std::pair<Section, std::string>, Read>& readers() {
          [](const Loaded& l) -> json { return l.server.ports.at(0).max_connections_per_address; }},
         {{Section::Port, "remote_password"}, [](const Loaded& l) -> json { return l.server.ports.at(0).remote_password; }},
         {{Section::Redundant, "system"}, [](const Loaded& l) -> json { return std::string(1, l.server.redundant.value().system); }},
+        {{Section::NodeSearch, "max_delay_ms"}, [](const Loaded& l) -> json { return l.server.node_search.max_delay_ms; }},
         {{Section::Module, "head_address"}, [](const Loaded& l) -> json { return l.server.modules.at(0).head_address; }},
         {{Section::Http, "enabled"}, [](const Loaded& l) -> json { return l.server.http.enabled; }},
         {{Section::Http, "port"}, [](const Loaded& l) -> json { return l.server.http.port; }},
