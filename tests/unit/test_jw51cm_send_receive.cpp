@@ -43,7 +43,8 @@ public:
     explicit FakeOutgoing(std::shared_ptr<Line> line) : line_(std::move(line)) {}
     ~FakeOutgoing() override { line_->destroyed = true; }
     void open(std::function<void(bool)> done) override {
-        line_->opened = [line = line_, done = std::move(done)](bool ok) {
+        // The fixture's `lines` keep each Line; a shared_ptr here would be a cycle (a leak).
+        line_->opened = [line = line_.get(), done = std::move(done)](bool ok) {
             line->is_connected = ok;
             done(ok);
         };
