@@ -229,12 +229,12 @@ std::optional<Handled> Station::route(protocol::Request& request, std::span<cons
         const bool by_extended = extended_frame && route.station == 0x7C;
         found = network_map_->find(*this, route.network, by_extended ? request.header.extended_station : route.station,
                                    by_extended);
-        if (found.error == protocol::EndCode::Ok && extended_frame)
-            for (const auto* station : found.relay.hops)
-                if (station != this && !station->engine_.port().station_extended_frame)
-                    found.error = protocol::EndCode::RouteStationNotFound;
-        if (found.error == protocol::EndCode::Ok && extended_frame && !found.relay.target->engine_.port().station_extended_frame)
-            found.error = protocol::EndCode::RouteStationNotFound;
+        if (found.error == protocol::EndCode::Ok && extended_frame) {
+            const auto takes_frame = [](const Station* station) { return station->engine_.port().station_extended_frame; };
+            const auto& hops = found.relay.hops;   // hops[0] is this station, whose port took the frame
+            if (!std::all_of(hops.begin() + 1, hops.end(), takes_frame) || !takes_frame(found.relay.target))
+                found.error = protocol::EndCode::RouteStationNotFound;
+        }
     } else {
         const bool by_pair = route.module_io >= 0x03D0 && route.module_io <= 0x03D3;
         if (!(by_pair || file)) return std::nullopt;
